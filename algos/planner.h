@@ -1,0 +1,127 @@
+#pragma once
+// The one virtual boundary of the engine: a planner is called once per query with the map, the
+// query, its RNG, reusable scratch space and a deadline, and returns the common result. Outcomes
+// ("no path", "hit the limit") are data in the result; exceptions are for misuse and bugs.
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "generators/corner_rule.h"
+#include "generators/rng.h"
+#include "generators/grid.h"
+
+namespace agv {
+
+enum class Failure { none, no_path, limit, invalid_path, invalid_input };
+const char* to_string(Failure f);
+
+// Cooperative time limit: planners poll expired() every few hundred expansions or iterations
+// (STYLE.md item 7) and give up with Failure::limit.
+class Deadline {
+ public:
+  using Clock = std::chrono::steady_clock;
+  static Deadline never() { return Deadline(Clock::time_point::max()); }
+  static Deadline after(std::chrono::nanoseconds budget) {
+    return Deadline(Clock::now() + budget);
+  }
+  explicit Deadline(Clock::time_point at) : at_(at) {}
+  bool expired() const { return at_ != Clock::time_point::max() && Clock::now() >= at_; }
+
+ private:
+  Clock::time_point at_;
+};
+
+// CPU time of one named phase of a plan call (search, post-processing, smoothing, ...).
+struct PhaseTime {
+  std::string name;
+  std::int64_t ns = 0;
+};
+
+struct PlanResult {
+  bool success = false;
+  Failure failure = Failure::none;
+  std::string message;  // why, for failures; empty on success
+  // Waypoints in continuous cell coordinates (cell centre = x + 0.5), start first, goal last.
+  std::vector<Point> path;
+  // Collision rule the path is validated under (the planner's own neighbour rule).
+  CornerRule rule = CornerRule::allow;
+  // Nodes taken off the open list, or samples / iterations / ant steps: documented per planner.
+  std::int64_t expanded_nodes = 0;
+  // Planner-specific scalar metrics (aggregated like the engine's, under these names).
+  std::vector<std::pair<std::string, double>> extra;
+  // CPU time per phase; the engine reports these under `timing`.
+  std::vector<PhaseTime> phases;
+
+  static PlanResult failed(Failure why, std::string message) {
+    PlanResult r;
+    r.failure = why;
+    r.message = std::move(message);
+    return r;
+  }
+};
+
+// Per-thread CPU clock: planning time is the work of this thread alone, whatever the others do.
+std::int64_t thread_cpu_ns();
+
+// Adds the CPU time from construction to destruction to `result.phases` under `name`.
+class PhaseTimer {
+ public:
+  PhaseTimer(PlanResult& result, const char* name)
+      : result_(result), name_(name), start_(thread_cpu_ns()) {}
+  ~PhaseTimer() { result_.phases.push_back({name_, thread_cpu_ns() - start_}); }
+  PhaseTimer(const PhaseTimer&) = delete;
+  PhaseTimer& operator=(const PhaseTimer&) = delete;
+
+ private:
+  PlanResult& result_;
+  const char* name_;
+  std::int64_t start_;
+};
+
+// Reusable per-thread buffers. Each planner keeps its buffers in a type of its own; get<T>()
+// creates one T per Scratch on first use and returns the same object on every later call, so a
+// worker thread allocates nothing in steady state.
+class Scratch {
+ public:
+  template <class T>
+  T& get() {
+    const void* key = &kKey<T>;
+    for (auto& slot : slots_)
+      if (slot.key == key) return *static_cast<T*>(slot.object.get());
+    slots_.push_back({key, std::unique_ptr<void, void (*)(void*)>(
+                               new T(), [](void* p) { delete static_cast<T*>(p); })});
+    return *static_cast<T*>(slots_.back().object.get());
+  }
+
+ private:
+  template <class T>
+  static constexpr char kKey = 0;
+  struct Slot {
+    const void* key;
+    std::unique_ptr<void, void (*)(void*)> object;
+  };
+  std::vector<Slot> slots_;
+};
+
+struct PlanRequest {
+  const Grid& grid;
+  Cell start;
+  Cell goal;
+  Rng& rng;
+  Scratch& scratch;
+  Deadline deadline = Deadline::never();
+};
+
+class Planner {
+ public:
+  virtual ~Planner() = default;
+  // Thread-safe: a planner object holds only its configuration; per-call state lives in
+  // request.scratch. Start and goal are in bounds and free (the engine checks before calling).
+  virtual PlanResult plan(const PlanRequest& request) const = 0;
+};
+
+}  // namespace agv

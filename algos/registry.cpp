@@ -1,0 +1,48 @@
+#include "algos/registry.h"
+
+
+namespace agv {
+
+const std::vector<PlannerInfo>& planner_registry() {
+  static const std::vector<PlannerInfo> registry = {
+  };
+  return registry;
+}
+
+const PlannerInfo* find_planner(std::string_view name) {
+  for (const auto& info : planner_registry())
+    if (info.name == name) return &info;
+  return nullptr;
+}
+
+ConfiguredPlanner configure_planner(const std::string& name, const nlohmann::json& params,
+                                    const std::string& where) {
+  const PlannerInfo* info = find_planner(name);
+  if (info == nullptr) {
+    std::string known;
+    for (const auto& p : planner_registry()) known += (known.empty() ? "" : ", ") + p.name;
+    throw InputError(where + ": unknown planner \"" + name + "\" (known: " + known + ")");
+  }
+  ConfiguredPlanner c;
+  c.info = info;
+  c.params = Params::resolve(info->params, params, where + ".params");
+  c.planner = info->make(c.params);
+  return c;
+}
+
+nlohmann::json registry_json() {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& info : planner_registry()) {
+    nlohmann::json p = nlohmann::json::array();
+    for (const auto& s : info.params) p.push_back(s.to_json());
+    out.push_back({{"name", info.name},
+                   {"summary", info.summary},
+                   {"source", info.source},
+                   {"expanded_nodes", info.expanded_nodes_meaning},
+                   {"stochastic", info.stochastic},
+                   {"params", p}});
+  }
+  return out;
+}
+
+}  // namespace agv

@@ -1,0 +1,44 @@
+#pragma once
+// One explicit table of planners, one line per planner (STYLE.md item 6). A config names a
+// planner by its stable public name and sets any of its declared parameters.
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "algos/params.h"
+#include "algos/planner.h"
+
+namespace agv {
+
+struct PlannerInfo {
+  std::string name;     // stable public name, e.g. "astar"
+  std::string summary;  // one line for `agvbench list`
+  std::string source;   // where it comes from, e.g. "paper 000 section 4.1"
+  std::string expanded_nodes_meaning;  // what expanded_nodes counts for this planner
+  bool stochastic = false;             // draws from the run's RNG
+  std::vector<ParamSpec> params;
+  // Builds a planner from a validated parameter set.
+  std::unique_ptr<Planner> (*make)(const Params& params) = nullptr;
+};
+
+const std::vector<PlannerInfo>& planner_registry();
+// nullptr when unknown.
+const PlannerInfo* find_planner(std::string_view name);
+
+// Looks the planner up and validates its parameters; throws InputError naming `where`.
+struct ConfiguredPlanner {
+  const PlannerInfo* info = nullptr;
+  Params params;
+  std::unique_ptr<Planner> planner;
+};
+ConfiguredPlanner configure_planner(const std::string& name, const nlohmann::json& params,
+                                    const std::string& where);
+
+// The registry as JSON (`agvbench list --json`).
+nlohmann::json registry_json();
+
+}  // namespace agv

@@ -1,0 +1,34 @@
+#pragma once
+// MovingAI benchmark formats (movingai.com/benchmarks/formats.html): `.map` reader and writer,
+// `.scen` reader. Readers accept CRLF, trailing blank lines and a map column holding a path;
+// malformed input throws InputError naming the file and line.
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "generators/grid.h"
+#include "generators/input_error.h"
+
+namespace agv {
+
+// '.' and 'G' are passable; '@', 'O', 'T', 'S', 'W' are obstacles.
+Grid read_map(const std::string& path);
+Grid parse_map(std::istream& in, const std::string& name);  // name: for messages
+void write_map(const Grid& grid, std::ostream& out);
+void write_map_file(const Grid& grid, const std::string& path);
+
+struct ScenarioQuery {
+  int bucket = 0;
+  std::string map;  // as written in the file
+  int map_width = 0;
+  int map_height = 0;
+  Cell start;
+  Cell goal;
+  double optimal_length = 0.0;
+};
+
+std::vector<ScenarioQuery> read_scen(const std::string& path);
+std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name);
+
+}  // namespace agv

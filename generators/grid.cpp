@@ -65,6 +65,8 @@ Grid& Grid::operator=(const Grid& other) {
   return *this;
 }
 
+Grid::Grid(Grid&&) noexcept = default;
+Grid& Grid::operator=(Grid&&) noexcept = default;
 Grid::~Grid() = default;
 
 void Grid::set_blocked(int x, int y, bool blocked) {

@@ -38,8 +38,9 @@ class Grid {
   Grid(int width, int height, double cell_edge = 1.0);
   Grid(const Grid& other);
   Grid& operator=(const Grid& other);
-  Grid(Grid&&) noexcept = default;
-  Grid& operator=(Grid&&) noexcept = default;
+  // Defined in grid.cpp, where Companions is complete (an inline default needs its destructor).
+  Grid(Grid&&) noexcept;
+  Grid& operator=(Grid&&) noexcept;
   ~Grid();
 
   int width() const { return width_; }

@@ -1,7 +1,8 @@
 #pragma once
 // MovingAI benchmark formats (movingai.com/benchmarks/formats.html): `.map` reader and writer,
 // `.scen` reader. Readers accept CRLF, trailing blank lines and a map column holding a path;
-// malformed input throws InputError naming the file and line.
+// malformed input throws InputError naming the file and line ("FILE:LINE: what is wrong").
+// Limits: a map side is at most 32768 cells and a map at most 2^28 cells.
 
 #include <iosfwd>
 #include <string>
@@ -26,9 +27,15 @@ struct ScenarioQuery {
   Cell start;
   Cell goal;
   double optimal_length = 0.0;
+  int line = 0;  // 1-based line in the scenario file, for messages
 };
 
 std::vector<ScenarioQuery> read_scen(const std::string& path);
 std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name);
+
+// Throws InputError "SCEN:LINE: ..." when the query's declared map size differs from the grid,
+// or its start or goal lies outside the grid or on an obstacle. `scen_name` names the file.
+void check_scenario_fits(const Grid& grid, const ScenarioQuery& query,
+                         const std::string& scen_name);
 
 }  // namespace agv

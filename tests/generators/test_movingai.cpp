@@ -1,0 +1,272 @@
+// MovingAI .map / .scen reading and writing: the five shared benchmark maps, round trips, and a
+// table of malformed inputs whose messages must name the line.
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "generators/movingai.h"
+#include "generators/rng.h"
+
+namespace agv {
+namespace {
+
+const std::string kMaps = AGV_SHARED_MAPS;
+
+struct SharedMap {
+  const char* name;
+  int width;
+  int height;
+  std::size_t scenarios;
+};
+constexpr SharedMap kSharedMaps[] = {
+    {"arena2.map", 281, 209, 910},
+    {"random512-10-0.map", 512, 512, 1780},
+    {"maze512-1-0.map", 512, 512, 12120},
+    {"8room_000.map", 512, 512, 2140},
+    {"Berlin_0_512.map", 512, 512, 1870},
+};
+
+// Obstacle count straight from the file's characters, without the reader.
+std::int64_t count_obstacle_chars(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int i = 0; i < 4; ++i) std::getline(in, line);
+  std::int64_t n = 0;
+  while (std::getline(in, line)) {
+    for (char c : line) n += (c == '@' || c == 'O' || c == 'T' || c == 'S' || c == 'W') ? 1 : 0;
+  }
+  return n;
+}
+
+Grid parse_map_text(const std::string& text) {
+  std::istringstream in(text);
+  return parse_map(in, "test.map");
+}
+
+std::vector<ScenarioQuery> parse_scen_text(const std::string& text) {
+  std::istringstream in(text);
+  return parse_scen(in, "test.scen");
+}
+
+TEST(MovingAi, ReadsTheSharedMapsAndScenarios) {
+  for (const SharedMap& m : kSharedMaps) {
+    const std::string path = kMaps + "/" + m.name;
+    const Grid g = read_map(path);
+    EXPECT_EQ(g.width(), m.width) << m.name;
+    EXPECT_EQ(g.height(), m.height) << m.name;
+    EXPECT_EQ(g.obstacle_count(), count_obstacle_chars(path)) << m.name;
+    EXPECT_GT(g.free_count(), 0);
+
+    const std::string scen_path = path + ".scen";
+    const std::vector<ScenarioQuery> queries = read_scen(scen_path);
+    EXPECT_EQ(queries.size(), m.scenarios) << m.name;
+    for (const ScenarioQuery& q : queries) {
+      EXPECT_EQ(q.map, m.name);
+      ASSERT_NO_THROW(check_scenario_fits(g, q, scen_path)) << m.name << " line " << q.line;
+    }
+  }
+}
+
+TEST(MovingAi, ScenarioFieldsAndLineNumbers) {
+  const std::vector<ScenarioQuery> q = read_scen(kMaps + "/arena2.map.scen");
+  ASSERT_FALSE(q.empty());
+  EXPECT_EQ(q[0].bucket, 0);
+  EXPECT_EQ(q[0].map_width, 281);
+  EXPECT_EQ(q[0].map_height, 209);
+  EXPECT_EQ(q[0].start, (Cell{99, 159}));
+  EXPECT_EQ(q[0].goal, (Cell{101, 162}));
+  EXPECT_DOUBLE_EQ(q[0].optimal_length, 3.82842712);
+  EXPECT_EQ(q[0].line, 2);
+  EXPECT_EQ(q[1].line, 3);
+}
+
+TEST(MovingAi, BerlinHasCrlfAndParsesLikeLf) {
+  const std::string path = kMaps + "/Berlin_0_512.map";
+  std::ifstream in(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_NE(text.find("\r\n"), std::string::npos);
+  std::string lf;
+  for (char c : text) {
+    if (c != '\r') lf += c;
+  }
+  EXPECT_TRUE(parse_map_text(lf).same_cells(read_map(path)));
+}
+
+TEST(MovingAi, WriteThenReadIsIdentical) {
+  Rng rng(8, 8);
+  for (int trial = 0; trial < 20; ++trial) {
+    Grid g(rng.between(1, 70), rng.between(1, 70));
+    for (int y = 0; y < g.height(); ++y) {
+      for (int x = 0; x < g.width(); ++x) g.set_blocked(x, y, rng.chance(0.3));
+    }
+    std::ostringstream out;
+    write_map(g, out);
+    EXPECT_TRUE(parse_map_text(out.str()).same_cells(g));
+  }
+  // Through a file, starting from a shared map.
+  const Grid arena = read_map(kMaps + "/arena2.map");
+  const std::string tmp = testing::TempDir() + "/agv_roundtrip.map";
+  write_map_file(arena, tmp);
+  EXPECT_TRUE(read_map(tmp).same_cells(arena));
+  std::filesystem::remove(tmp);
+}
+
+TEST(MovingAi, AcceptsAllCharactersAndTrailingBlankLines) {
+  const Grid g = parse_map_text("type octile\r\nheight 2\r\nwidth 4\r\nmap\r\n.G@O\r\nTSW.\r\n\r\n \n");
+  EXPECT_EQ(g.width(), 4);
+  EXPECT_EQ(g.height(), 2);
+  EXPECT_FALSE(g.blocked(0, 0));
+  EXPECT_FALSE(g.blocked(1, 0));
+  EXPECT_TRUE(g.blocked(2, 0));
+  EXPECT_TRUE(g.blocked(3, 0));
+  EXPECT_TRUE(g.blocked(0, 1));
+  EXPECT_TRUE(g.blocked(1, 1));
+  EXPECT_TRUE(g.blocked(2, 1));
+  EXPECT_FALSE(g.blocked(3, 1));
+  // No final newline.
+  EXPECT_EQ(parse_map_text("type octile\nheight 1\nwidth 2\nmap\n.@").obstacle_count(), 1);
+}
+
+struct BadInput {
+  const char* text;
+  int line;
+  const char* what;  // a fragment of the message
+};
+
+TEST(MovingAi, MalformedMapsNameTheLine) {
+  const BadInput cases[] = {
+      {"", 1, "type octile"},
+      {"type octagon\nheight 1\nwidth 1\nmap\n.\n", 1, "type octile"},
+      {"height 1\nwidth 1\nmap\n.\n", 1, "type octile"},
+      {"type octile\nwidth 1\nheight 1\nmap\n.\n", 2, "height"},
+      {"type octile\nheight x\nwidth 1\nmap\n.\n", 2, "not a whole number"},
+      {"type octile\nheight 1.5\nwidth 1\nmap\n.\n", 2, "not a whole number"},
+      {"type octile\nheight 0\nwidth 1\nmap\n", 2, "outside"},
+      {"type octile\nheight 1\nwidth 99999999\nmap\n", 3, "outside"},
+      {"type octile\nheight 30000\nwidth 30000\nmap\n", 3, "exceeds"},
+      {"type octile\nheight 1\nwidth 2\n", 4, "map"},
+      {"type octile\nheight 1\nwidth 2\nmop\n..\n", 4, "map"},
+      {"type octile\nheight 2\nwidth 2\nmap\n..\n", 6, "ends after 1"},
+      {"type octile\nheight 2\nwidth 2\nmap\n..\n...\n", 6, "3 characters"},
+      {"type octile\nheight 2\nwidth 2\nmap\n.\n..\n", 5, "1 characters"},
+      {"type octile\nheight 2\nwidth 3\nmap\n...\n.x.\n", 6, "'x' at column 2"},
+      {"type octile\nheight 1\nwidth 3\nmap\n.\t.\n", 5, "byte 0x9"},
+      {"type octile\nheight 1\nwidth 2\nmap\n..\n..\n", 6, "after the 1 map rows"},
+      {"type octile\nheight 1\nwidth 2\nmap\n..\n\n@\n", 7, "after the 1 map rows"},
+  };
+  for (const BadInput& c : cases) {
+    try {
+      parse_map_text(c.text);
+      ADD_FAILURE() << "no error for: " << c.text;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind("test.map:" + std::to_string(c.line) + ": ", 0), 0U) << what;
+      EXPECT_NE(what.find(c.what), std::string::npos) << what;
+    }
+  }
+}
+
+TEST(MovingAi, UnreadableFilesAreNamed) {
+  const std::string missing = testing::TempDir() + "/no_such_dir/none.map";
+  try {
+    read_map(missing);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(missing), std::string::npos);
+  }
+  EXPECT_THROW(read_scen(missing + ".scen"), InputError);
+  EXPECT_THROW(write_map_file(Grid(2, 2), missing), InputError);
+}
+
+TEST(MovingAi, ScenarioVariantsParse) {
+  // version 1.0, CRLF, blank lines, 6-significant-digit lengths, spaces, a path with spaces.
+  const auto q = parse_scen_text(
+      "\r\nversion 1.0\r\n"
+      "3\tmaps/dao/arena2.map\t281\t209\t99\t159\t101\t162\t3.82843\r\n"
+      "\r\n"
+      "0 random512-10-0.map 512 512 220 250 220 250 0\n"
+      "1\tmy maps/a b.map\t10\t10\t0\t0\t9\t9\t12.7279\n\n");
+  ASSERT_EQ(q.size(), 3U);
+  EXPECT_EQ(q[0].bucket, 3);
+  EXPECT_EQ(q[0].map, "maps/dao/arena2.map");
+  EXPECT_NEAR(q[0].optimal_length, 3.82842712, 1e-5 * 3.83);
+  EXPECT_EQ(q[0].line, 3);
+  EXPECT_EQ(q[1].start, q[1].goal);
+  EXPECT_EQ(q[1].optimal_length, 0.0);
+  EXPECT_EQ(q[1].line, 5);
+  EXPECT_EQ(q[2].map, "my maps/a b.map");
+  EXPECT_DOUBLE_EQ(q[2].optimal_length, 12.7279);
+  EXPECT_TRUE(parse_scen_text("version 1\n").empty());
+}
+
+TEST(MovingAi, MalformedScenariosNameTheLine) {
+  const std::string ok = "0\ta.map\t10\t10\t1\t2\t3\t4\t5.5\n";
+  const BadInput cases[] = {
+      {"", 1, "version"},
+      {"version 2\n", 1, "version 1"},
+      {"0\ta.map\t10\t10\t1\t2\t3\t4\t5.5\n", 1, "version 1"},
+      {"version 1\n0\ta.map\t10\t10\t1\t2\t3\t4\n", 2, "found 8"},
+      {"version 1\n\n0\ta.map\t10\t10\tx\t2\t3\t4\t5\n", 3, "start x 'x'"},
+      {"version 1\n0\ta.map\t10\t10\t1\t2\t3\t4\tfast\n", 2, "optimal length"},
+      {"version 1\n0\ta.map\t10\t10\t1\t2\t3\t4\t-1\n", 2, "optimal length"},
+      {"version 1\n0\ta.map\t10\t10\t1\t2\t3\t4\tnan\n", 2, "optimal length"},
+      {"version 1\n0\ta.map\t10\t10\t10\t2\t3\t4\t5\n", 2, "start x 10 is outside"},
+      {"version 1\n0\ta.map\t10\t10\t1\t2\t3\t-4\t5\n", 2, "goal y -4"},
+      {"version 1\n0\ta.map\t0\t10\t0\t0\t0\t0\t0\n", 2, "map width 0"},
+      {"version 1\n-1\ta.map\t10\t10\t1\t2\t3\t4\t5\n", 2, "bucket"},
+      {"version 1\n0\ta.map\t10\t10\t1.0\t2\t3\t4\t5\n", 2, "start x"},
+  };
+  for (const BadInput& c : cases) {
+    try {
+      parse_scen_text(c.text);
+      ADD_FAILURE() << "no error for: " << c.text;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind("test.scen:" + std::to_string(c.line) + ": ", 0), 0U) << what;
+      EXPECT_NE(what.find(c.what), std::string::npos) << what;
+    }
+  }
+  EXPECT_EQ(parse_scen_text("version 1\n" + ok).size(), 1U);
+}
+
+TEST(MovingAi, ScenarioMustFitTheMap) {
+  Grid g(10, 8);
+  g.set_blocked(3, 4, true);
+  const auto q = parse_scen_text(
+      "version 1\n"
+      "0\ta.map\t10\t8\t1\t2\t5\t5\t5\n"    // fine
+      "0\ta.map\t10\t8\t3\t4\t5\t5\t5\n"    // start on an obstacle
+      "0\ta.map\t10\t8\t1\t2\t3\t4\t5\n"    // goal on an obstacle
+      "0\ta.map\t10\t10\t1\t2\t5\t5\t5\n"   // declared size differs
+      "0\ta.map\t12\t8\t11\t2\t5\t5\t5\n");  // declared size differs (and start outside)
+  ASSERT_EQ(q.size(), 5U);
+  EXPECT_NO_THROW(check_scenario_fits(g, q[0], "s.scen"));
+  const char* expected[] = {"s.scen:3: start (3, 4) is on an obstacle",
+                            "s.scen:4: goal (3, 4) is on an obstacle", "s.scen:5: declares",
+                            "s.scen:6: declares"};
+  for (int i = 1; i < 5; ++i) {
+    try {
+      check_scenario_fits(g, q[i], "s.scen");
+      ADD_FAILURE() << i;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(expected[i - 1], 0), 0U) << e.what();
+    }
+  }
+  ScenarioQuery outside = q[0];
+  outside.start = {10, 0};
+  try {
+    check_scenario_fits(g, outside, "s.scen");
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("outside the 10x8 map"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace agv

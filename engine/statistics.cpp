@@ -1,0 +1,215 @@
+#include "engine/statistics.h"
+
+#include <algorithm>
+#include <boost/math/distributions/normal.hpp>
+#include <boost/math/distributions/students_t.hpp>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace agv {
+
+void CompensatedSum::add(double x) {
+  const double t = sum_ + x;
+  // Neumaier: recover the low-order bits of whichever operand was smaller.
+  compensation_ += std::abs(sum_) >= std::abs(x) ? (sum_ - t) + x : (x - t) + sum_;
+  sum_ = t;
+}
+
+double compensated_sum(std::span<const double> values) {
+  CompensatedSum s;
+  for (double x : values) s.add(x);
+  return s.value();
+}
+
+namespace {
+
+struct MeanSd {
+  double mean = kNaN;
+  double sd = kNaN;
+};
+
+// Two passes: the mean, then the compensated sum of squared deviations (no cancellation).
+MeanSd mean_sd(std::span<const double> values) {
+  const std::size_t n = values.size();
+  MeanSd r;
+  if (n == 0) return r;
+  r.mean = compensated_sum(values) / static_cast<double>(n);
+  if (n < 2) return r;
+  CompensatedSum ss;
+  for (double x : values) ss.add((x - r.mean) * (x - r.mean));
+  r.sd = std::sqrt(ss.value() / static_cast<double>(n - 1));
+  return r;
+}
+
+double t_quantile(double p, std::size_t df) {
+  const boost::math::students_t_distribution<double> t(static_cast<double>(df));
+  return boost::math::quantile(t, p);
+}
+
+Interval t_interval(const MeanSd& m, std::size_t n, double confidence) {
+  if (n < 2 || !std::isfinite(m.sd)) return {};
+  const double half =
+      t_quantile(1.0 - (1.0 - confidence) / 2.0, n - 1) * m.sd / std::sqrt(static_cast<double>(n));
+  return {m.mean - half, m.mean + half};
+}
+
+}  // namespace
+
+double quantile_sorted(std::span<const double> sorted, double p) {
+  if (sorted.empty()) return kNaN;
+  const double h = static_cast<double>(sorted.size() - 1) * std::clamp(p, 0.0, 1.0);
+  const auto lo = static_cast<std::size_t>(std::floor(h));
+  if (lo + 1 >= sorted.size()) return sorted.back();
+  const double frac = h - static_cast<double>(lo);
+  return sorted[lo] + frac * (sorted[lo + 1] - sorted[lo]);
+}
+
+Interval mean_interval(std::span<const double> values, double confidence) {
+  return t_interval(mean_sd(values), values.size(), confidence);
+}
+
+Summary summarize(std::span<const double> values) {
+  Summary s;
+  s.count = values.size();
+  if (values.empty()) return s;
+  const MeanSd m = mean_sd(values);
+  s.mean = m.mean;
+  s.stddev = m.sd;
+  std::vector<double> sorted(values.begin(), values.end());
+  std::sort(sorted.begin(), sorted.end());
+  s.min = sorted.front();
+  s.max = sorted.back();
+  s.p5 = quantile_sorted(sorted, 0.05);
+  s.median = quantile_sorted(sorted, 0.5);
+  s.p95 = quantile_sorted(sorted, 0.95);
+  s.ci95 = t_interval(m, values.size(), 0.95);
+  return s;
+}
+
+Interval wilson_interval(std::int64_t successes, std::int64_t n, double confidence) {
+  if (n <= 0) return {};
+  const boost::math::normal_distribution<double> normal;
+  const double z = boost::math::quantile(normal, 1.0 - (1.0 - confidence) / 2.0);
+  const double nn = static_cast<double>(n);
+  const double p = static_cast<double>(successes) / nn;
+  const double z2n = z * z / nn;
+  const double centre = (p + z2n / 2.0) / (1.0 + z2n);
+  const double half = z / (1.0 + z2n) * std::sqrt(p * (1.0 - p) / nn + z2n / (4.0 * nn));
+  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
+}
+
+WilcoxonResult wilcoxon_signed_rank(std::span<const double> differences,
+                                    double rank_tie_tolerance) {
+  WilcoxonResult r;
+  struct Signed {
+    double abs;
+    bool positive;
+  };
+  std::vector<Signed> d;
+  d.reserve(differences.size());
+  bool zeros = false;
+  for (double x : differences) {
+    if (x == 0.0) {
+      zeros = true;
+      continue;
+    }
+    d.push_back({std::abs(x), x > 0.0});
+  }
+  const std::size_t n = d.size();
+  r.n = n;
+  if (n == 0) return r;
+  std::stable_sort(d.begin(), d.end(),
+                   [](const Signed& a, const Signed& b) { return a.abs < b.abs; });
+
+  // Mid-ranks over tie groups; V and the tie correction sum(t^3 - t) in one pass.
+  CompensatedSum v;
+  double tie_term = 0.0;
+  for (std::size_t i = 0; i < n;) {
+    std::size_t j = i + 1;
+    while (j < n && d[j].abs - d[j - 1].abs <= rank_tie_tolerance * d[j].abs) ++j;
+    const double rank = (static_cast<double>(i + 1) + static_cast<double>(j)) / 2.0;
+    for (std::size_t k = i; k < j; ++k)
+      if (d[k].positive) v.add(rank);
+    const double t = static_cast<double>(j - i);
+    tie_term += t * t * t - t;
+    i = j;
+  }
+  r.v = v.value();
+  const double nn = static_cast<double>(n);
+  const double centre = nn * (nn + 1.0) / 4.0;
+
+  if (n < 50 && tie_term == 0.0 && !zeros) {
+    // Exact: count subsets of {1..n} by rank sum. Counts stay below 2^50, exact in a double.
+    r.exact = true;
+    const std::size_t max_sum = n * (n + 1) / 2;
+    std::vector<double> count(max_sum + 1, 0.0);
+    count[0] = 1.0;
+    for (std::size_t k = 1; k <= n; ++k)
+      for (std::size_t s = k * (k + 1) / 2; s >= k; --s) count[s] += count[s - k];
+    const auto stat = static_cast<std::size_t>(std::llround(r.v));
+    // R: P(V >= stat) in the upper half, P(V <= stat) in the lower, doubled and capped at 1.
+    double tail = 0.0;
+    if (r.v > centre) {
+      for (std::size_t s = stat; s <= max_sum; ++s) tail += count[s];
+    } else {
+      for (std::size_t s = 0; s <= stat; ++s) tail += count[s];
+    }
+    r.p = std::min(1.0, 2.0 * std::ldexp(tail, -static_cast<int>(n)));
+    return r;
+  }
+
+  const double sigma = std::sqrt(nn * (nn + 1.0) * (2.0 * nn + 1.0) / 24.0 - tie_term / 48.0);
+  double z = r.v - centre;
+  const double correction = z > 0.0 ? 0.5 : z < 0.0 ? -0.5 : 0.0;
+  z = (z - correction) / sigma;
+  const boost::math::normal_distribution<double> normal;
+  const double lower = boost::math::cdf(normal, z);
+  const double upper = boost::math::cdf(boost::math::complement(normal, z));
+  r.p = std::min(1.0, 2.0 * std::min(lower, upper));
+  return r;
+}
+
+PairedComparison compare_paired(std::span<const double> candidate, std::span<const double> baseline,
+                                double tie_tolerance) {
+  if (candidate.size() != baseline.size())
+    throw std::invalid_argument("compare_paired: candidate and baseline differ in length");
+  PairedComparison r;
+  std::vector<double> differences;
+  std::vector<double> logs;
+  differences.reserve(candidate.size());
+  logs.reserve(candidate.size());
+  for (std::size_t i = 0; i < candidate.size(); ++i) {
+    const double c = candidate[i];
+    const double b = baseline[i];
+    if (std::isnan(c) || std::isnan(b)) continue;
+    ++r.pairs;
+    const bool tie = std::abs(c - b) <= tie_tolerance * std::max(std::abs(c), std::abs(b));
+    if (tie) {
+      ++r.ties;
+    } else if (c < b) {
+      ++r.wins;
+    } else {
+      ++r.losses;
+    }
+    differences.push_back(tie ? 0.0 : c - b);
+    if (c > 0.0 && b > 0.0) {
+      logs.push_back(std::log(c / b));
+    } else if (c == 0.0 && b == 0.0) {
+      logs.push_back(0.0);
+    } else {
+      ++r.ratio_excluded;
+    }
+  }
+  r.ratio_count = logs.size();
+  if (!logs.empty()) {
+    const MeanSd m = mean_sd(logs);
+    r.geo_mean_ratio = std::exp(m.mean);
+    const Interval li = t_interval(m, logs.size(), 0.95);
+    if (li.defined()) r.geo_mean_ci95 = {std::exp(li.lo), std::exp(li.hi)};
+  }
+  r.wilcoxon = wilcoxon_signed_rank(differences, tie_tolerance);
+  return r;
+}
+
+}  // namespace agv

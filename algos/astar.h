@@ -1,0 +1,10 @@
+#pragma once
+// Classic A* (PLANNERS.md "A* (classic)"): the "traditional A*" column of every paper.
+
+#include "algos/registry.h"
+
+namespace agv {
+
+PlannerInfo astar_planner();
+
+}  // namespace agv

@@ -1,0 +1,12 @@
+#pragma once
+// Ant colony optimisation on the 8-connected grid (Ant System, Dorigo et al. 1996), the "ant
+// colony" baseline of paper 002 section 5 with its Table 2 parameters as defaults (PLANNERS.md
+// "Baselines"). Raw cell-centre path, no post-processing.
+
+#include "algos/registry.h"
+
+namespace agv {
+
+PlannerInfo aco_planner();
+
+}  // namespace agv

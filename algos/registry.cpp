@@ -1,10 +1,22 @@
 #include "algos/registry.h"
 
+#include "algos/astar.h"
+#include "algos/dijkstra.h"
+#include "algos/aco.h"
+#include "algos/birrt.h"
+#include "algos/prm.h"
+#include "algos/rrt.h"
 
 namespace agv {
 
 const std::vector<PlannerInfo>& planner_registry() {
   static const std::vector<PlannerInfo> registry = {
+      astar_planner(),
+      dijkstra_planner(),
+      prm_planner(),
+      rrt_planner(),
+      birrt_planner(),
+      aco_planner(),
   };
   return registry;
 }

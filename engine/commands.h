@@ -1,0 +1,52 @@
+#pragma once
+// The subcommands of `agvbench`. Each returns the process exit code: 0 ok, 1 runtime failure,
+// 2 bad input. InputError escaping a command is turned into exit 2 by main.
+
+#include <string>
+#include <vector>
+
+namespace agv {
+
+struct RunCommand {
+  std::string config = "configs/default.json";
+  int threads = -1;  // -1: the config's value
+  std::string out;   // overrides the config's report path
+  std::string runs_out;
+  bool quiet = false;
+};
+int command_run(const RunCommand& cmd);
+
+int command_validate(const std::string& config_path);
+
+int command_list(bool as_json);
+
+struct PlanCommand {
+  std::vector<std::string> planners = {"astar"};
+  std::vector<std::string> params;  // "key=value", applied to every planner that declares key
+  std::string map_file;             // a MovingAI .map; else a generated grid
+  std::string generator = "uniform";
+  std::string size = "32";
+  double density = 0.2;
+  std::string endpoints = "corners";
+  bool require_solvable = true;
+  long long seed = 1;
+  int map_index = 0;
+  std::string start;  // "x,y"; required with a map file
+  std::string goal;
+  bool json = false;
+  bool ascii = true;
+  std::string json_out;  // write the result document to this file
+};
+int command_plan(const PlanCommand& cmd);
+
+struct ScenCommand {
+  std::string map_file;
+  std::string scen_file;
+  std::string planner = "astar";
+  std::vector<std::string> params;
+  bool json = false;
+  double tolerance = 1e-5;  // relative; files in the wild carry 6 significant digits
+};
+int command_scen(const ScenCommand& cmd);
+
+}  // namespace agv

@@ -1,0 +1,77 @@
+// agvbench: sweeps, single plans, MovingAI scenarios and the planner registry.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+#include "engine/commands.h"
+#include "generators/input_error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"agvbench: a parallel benchmark engine for AGV grid path planners"};
+  app.require_subcommand(1);
+
+  agv::RunCommand run;
+  auto* run_cmd = app.add_subcommand("run", "run a sweep and write its JSON report");
+  run_cmd->add_option("config", run.config, "sweep config (default: configs/default.json)");
+  run_cmd->add_option("--threads", run.threads, "worker threads (0 = all)")->check(CLI::Range(0, 4096));
+  run_cmd->add_option("--out", run.out, "report path (overrides the config)");
+  run_cmd->add_option("--runs-out", run.runs_out, "JSON Lines file of per-run records");
+  run_cmd->add_flag("--quiet", run.quiet, "no progress meter and no summary table");
+
+  std::string validate_path;
+  auto* validate_cmd = app.add_subcommand("validate", "check a sweep config without running it");
+  validate_cmd->add_option("config", validate_path, "sweep config")->required();
+
+  bool list_json = false;
+  auto* list_cmd = app.add_subcommand("list", "list planners, their parameters and defaults");
+  list_cmd->add_flag("--json", list_json, "print the registry as JSON");
+
+  agv::PlanCommand plan;
+  auto* plan_cmd = app.add_subcommand("plan", "run planners on one map and show the paths");
+  plan_cmd->add_option("--planner", plan.planners, "planner name (repeatable)");
+  plan_cmd->add_option("--param", plan.params, "KEY=VALUE parameter (repeatable)");
+  plan_cmd->add_option("--map", plan.map_file, "MovingAI .map file (else a generated grid)");
+  plan_cmd->add_option("--generator", plan.generator, "generator for a generated grid");
+  plan_cmd->add_option("--size", plan.size, "N or WxH");
+  plan_cmd->add_option("--density", plan.density, "obstacle density");
+  plan_cmd->add_option("--endpoints", plan.endpoints, "corners or random");
+  plan_cmd->add_option("--seed", plan.seed, "sweep seed");
+  plan_cmd->add_option("--map-index", plan.map_index, "map index within its sweep cell");
+  plan_cmd->add_option("--start", plan.start, "start cell x,y (overrides the endpoints)");
+  plan_cmd->add_option("--goal", plan.goal, "goal cell x,y (overrides the endpoints)");
+  plan_cmd->add_flag("--json", plan.json, "print the result as JSON instead of text");
+  plan_cmd->add_option("--json-out", plan.json_out, "also write the result JSON to this file");
+  plan_cmd->add_flag("!--no-ascii", plan.ascii, "do not draw the map");
+
+  agv::ScenCommand scen;
+  auto* scen_cmd = app.add_subcommand("scen", "run every query of a MovingAI scenario file");
+  scen_cmd->add_option("map", scen.map_file, "MovingAI .map file")->required();
+  scen_cmd->add_option("scen", scen.scen_file, "MovingAI .scen file")->required();
+  scen_cmd->add_option("--planner", scen.planner, "planner name (default astar)");
+  scen_cmd->add_option("--param", scen.params, "KEY=VALUE parameter (repeatable)");
+  scen_cmd->add_option("--tolerance", scen.tolerance, "relative tolerance on optimal lengths");
+  scen_cmd->add_flag("--json", scen.json, "print the summary as JSON");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+
+  try {
+    if (*run_cmd) return agv::command_run(run);
+    if (*validate_cmd) return agv::command_validate(validate_path);
+    if (*list_cmd) return agv::command_list(list_json);
+    if (*plan_cmd) return agv::command_plan(plan);
+    if (*scen_cmd) return agv::command_scen(scen);
+  } catch (const agv::InputError& e) {
+    std::fprintf(stderr, "agvbench: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "agvbench: failed: %s\n", e.what());
+    return 1;
+  }
+  return 1;
+}

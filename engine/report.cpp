@@ -1,0 +1,287 @@
+#include "engine/report.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "engine/environment.h"
+#include "engine/statistics.h"
+
+namespace agv {
+
+using nlohmann::json;
+
+namespace {
+
+json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+json summary_json(const Summary& s) {
+  return {{"count", s.count},
+          {"mean", number_or_null(s.mean)},
+          {"stddev", number_or_null(s.stddev)},
+          {"min", number_or_null(s.min)},
+          {"p5", number_or_null(s.p5)},
+          {"median", number_or_null(s.median)},
+          {"p95", number_or_null(s.p95)},
+          {"max", number_or_null(s.max)},
+          {"ci95", {number_or_null(s.ci95.lo), number_or_null(s.ci95.hi)}}};
+}
+
+json paired_json(const PairedComparison& c) {
+  return {{"pairs", c.pairs},
+          {"geo_mean_ratio", number_or_null(c.geo_mean_ratio)},
+          {"ci95", {number_or_null(c.geo_mean_ci95.lo), number_or_null(c.geo_mean_ci95.hi)}},
+          {"ratios_excluded", c.ratio_excluded},
+          {"wins", c.wins},
+          {"ties", c.ties},
+          {"losses", c.losses},
+          {"wilcoxon_p", number_or_null(c.wilcoxon.p)}};
+}
+
+// The metrics a paired comparison reports (costs: smaller is better).
+constexpr std::array<std::string_view, 6> kPairedMetrics = {
+    "path_length", "path_nodes", "turns", "turn_angle_rad", "expanded_nodes", "motion_time_s"};
+constexpr double kTieTolerance = 1e-9;
+
+std::size_t metric_index(std::string_view name) {
+  for (std::size_t i = 0; i < kRunMetricNames.size(); ++i)
+    if (kRunMetricNames[i] == name) return i;
+  throw std::logic_error("unknown metric");
+}
+
+// Values of one metric over the successful runs of (cell, planner), in map order.
+std::vector<double> successful_values(const SweepResults& r, const SweepCell& cell,
+                                      std::size_t planner, std::size_t metric) {
+  std::vector<double> out;
+  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
+    const RunSlot& s = r.run(static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m,
+                             planner);
+    if (s.done && s.outcome == Outcome::success && std::isfinite(s.metrics[metric]))
+      out.push_back(s.metrics[metric]);
+  }
+  return out;
+}
+
+json planner_cell_json(const SweepResults& r, const SweepCell& cell, std::size_t p,
+                       const PlannerEntry& entry) {
+  std::array<std::int64_t, kOutcomeCount> counts{};
+  std::int64_t runs = 0;
+  std::vector<double> plan_times;
+  std::map<std::string, std::vector<double>> phases;
+  std::map<std::string, std::vector<double>> extras;
+  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
+    const RunSlot& s = r.run(static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m, p);
+    if (!s.done) continue;
+    ++runs;
+    ++counts[static_cast<int>(s.outcome)];
+    plan_times.push_back(static_cast<double>(s.plan_time_ns));
+    for (const auto& ph : s.phases) phases[ph.name].push_back(static_cast<double>(ph.ns));
+    if (s.outcome == Outcome::success)
+      for (const auto& [name, value] : s.extra)
+        if (std::isfinite(value)) extras[name].push_back(value);
+  }
+  const auto successes = counts[static_cast<int>(Outcome::success)];
+  const Interval wilson = wilson_interval(successes, runs, 0.95);
+  json failures = json::object();
+  for (int o = 1; o < kOutcomeCount; ++o)
+    if (counts[o] > 0) failures[std::string(to_string(static_cast<Outcome>(o)))] = counts[o];
+  json metrics = json::object();
+  for (std::size_t i = 0; i < kRunMetricNames.size(); ++i) {
+    const auto values = successful_values(r, cell, p, i);
+    metrics[std::string(kRunMetricNames[i])] = summary_json(summarize(values));
+  }
+  for (const auto& [name, values] : extras) metrics[name] = summary_json(summarize(values));
+  json phase_json = json::object();
+  for (const auto& [name, values] : phases) phase_json[name] = summary_json(summarize(values));
+  return {{"planner", entry.label},
+          {"name", entry.name},
+          {"runs", runs},
+          {"successes", successes},
+          {"success_rate", runs > 0 ? json(static_cast<double>(successes) / static_cast<double>(runs))
+                                    : json(nullptr)},
+          {"success_ci95", {number_or_null(wilson.lo), number_or_null(wilson.hi)}},
+          {"failures", failures},
+          {"metrics", metrics},
+          {"timing", {{"plan_time_ns", summary_json(summarize(plan_times))}, {"phases", phase_json}}}};
+}
+
+// Pairs over maps where both planners succeeded, in map order.
+void paired_values(const SweepResults& r, const SweepCell& cell, std::size_t a, std::size_t b,
+                   std::size_t metric, std::vector<double>& va, std::vector<double>& vb) {
+  va.clear();
+  vb.clear();
+  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
+    const std::int64_t task = static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m;
+    const RunSlot& sa = r.run(task, a);
+    const RunSlot& sb = r.run(task, b);
+    if (!sa.done || !sb.done || sa.outcome != Outcome::success || sb.outcome != Outcome::success)
+      continue;
+    const double x = metric < kRunMetricNames.size() ? sa.metrics[metric]
+                                                     : static_cast<double>(sa.plan_time_ns);
+    const double y = metric < kRunMetricNames.size() ? sb.metrics[metric]
+                                                     : static_cast<double>(sb.plan_time_ns);
+    if (std::isfinite(x) && std::isfinite(y)) {
+      va.push_back(x);
+      vb.push_back(y);
+    }
+  }
+}
+
+json paired_cell_json(const SweepConfig& config, const SweepResults& r, const SweepCell& cell) {
+  std::size_t base = 0;
+  for (std::size_t p = 0; p < r.labels.size(); ++p)
+    if (r.labels[p] == config.baseline) base = p;
+  json out = json::array();
+  std::vector<double> va, vb;
+  for (std::size_t p = 0; p < r.labels.size(); ++p) {
+    if (p == base) continue;
+    json metrics = json::object();
+    for (auto name : kPairedMetrics) {
+      paired_values(r, cell, p, base, metric_index(name), va, vb);
+      metrics[std::string(name)] = paired_json(compare_paired(va, vb, kTieTolerance));
+    }
+    paired_values(r, cell, p, base, kRunMetricNames.size(), va, vb);
+    out.push_back({{"planner", r.labels[p]},
+                   {"baseline", r.labels[base]},
+                   {"metrics", metrics},
+                   {"timing", {{"plan_time_ns", paired_json(compare_paired(va, vb, kTieTolerance))}}}});
+  }
+  return out;
+}
+
+}  // namespace
+
+json build_report(const SweepConfig& config, const SweepResults& r) {
+  json cells = json::array();
+  std::int64_t runs_done = 0;
+  for (const auto& s : r.runs) runs_done += s.done ? 1 : 0;
+  for (const auto& cell : r.plan.cells) {
+    std::vector<double> fractions;
+    std::int64_t rejections = 0, maps = 0;
+    for (int m = 0; m < r.plan.maps_per_cell; ++m) {
+      const MapSlot& ms = r.maps[static_cast<std::size_t>(cell.index) * r.plan.maps_per_cell + m];
+      if (!ms.done) continue;
+      ++maps;
+      rejections += ms.rejections;
+      fractions.push_back(ms.obstacle_fraction);
+    }
+    json planners = json::array();
+    for (std::size_t p = 0; p < r.labels.size(); ++p)
+      planners.push_back(planner_cell_json(r, cell, p, config.planners[p]));
+    cells.push_back({{"cell", cell.key},
+                     {"generator", cell.generator},
+                     {"width", cell.size.width},
+                     {"height", cell.size.height},
+                     {"density", cell.density},
+                     {"maps", maps},
+                     {"rejections", rejections},
+                     {"obstacle_fraction", summary_json(summarize(fractions))},
+                     {"planners", planners},
+                     {"paired", paired_cell_json(config, r, cell)}});
+  }
+  return {{"schema_version", kReportSchemaVersion},
+          {"tool", "agvbench"},
+          {"config", config_as_run(config)},
+          {"complete", r.complete},
+          {"totals", {{"cells", r.plan.cells.size()}, {"maps", r.plan.map_tasks()}, {"runs", runs_done}}},
+          {"cells", cells},
+          {"environment", environment_json(r.threads)},
+          {"timing",
+           {{"wall_s", r.wall_s},
+            {"runs_per_s", r.wall_s > 0 ? static_cast<double>(runs_done) / r.wall_s : 0.0}}}};
+}
+
+void write_json_atomic(const json& document, const std::string& path) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  if (target.has_parent_path()) fs::create_directories(target.parent_path());
+  const std::string tmp = path + ".tmp." + std::to_string(getpid());
+  const std::string text = document.dump(1) + "\n";
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) throw std::runtime_error("cannot write " + tmp);
+  std::size_t written = 0;
+  while (written < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
+    if (n <= 0) {
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      throw std::runtime_error("write failed for " + tmp);
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    ::unlink(tmp.c_str());
+    throw std::runtime_error("cannot flush " + tmp);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    ::unlink(tmp.c_str());
+    throw std::runtime_error("cannot rename " + tmp + " to " + path);
+  }
+}
+
+json deterministic_part(const json& report) {
+  if (report.is_object()) {
+    json out = json::object();
+    for (const auto& [key, value] : report.items()) {
+      if (key == "timing" || key == "environment") continue;
+      out[key] = deterministic_part(value);
+    }
+    return out;
+  }
+  if (report.is_array()) {
+    json out = json::array();
+    for (const auto& v : report) out.push_back(deterministic_part(v));
+    return out;
+  }
+  return report;
+}
+
+std::string summary_table(const SweepConfig& config, const SweepResults& r) {
+  std::size_t base = 0;
+  for (std::size_t p = 0; p < r.labels.size(); ++p)
+    if (r.labels[p] == config.baseline) base = p;
+  std::ostringstream out;
+  char line[256];
+  std::snprintf(line, sizeof line, "%-24s %8s %8s %10s %12s %8s %12s %10s\n", "planner", "runs",
+                "success", "len/base", "[95% CI]", "turns", "expanded", "median_us");
+  out << line;
+  const std::size_t il = metric_index("path_length"), it = metric_index("turns"),
+                    ie = metric_index("expanded_nodes");
+  for (std::size_t p = 0; p < r.labels.size(); ++p) {
+    std::int64_t runs = 0, ok = 0;
+    std::vector<double> turns, expanded, times, a, b;
+    for (std::int64_t task = 0; task < r.plan.map_tasks(); ++task) {
+      const RunSlot& s = r.run(task, p);
+      if (!s.done) continue;
+      ++runs;
+      times.push_back(static_cast<double>(s.plan_time_ns) / 1e3);
+      if (s.outcome != Outcome::success) continue;
+      ++ok;
+      turns.push_back(s.metrics[it]);
+      expanded.push_back(s.metrics[ie]);
+      const RunSlot& sb = r.run(task, base);
+      if (sb.done && sb.outcome == Outcome::success) {
+        a.push_back(s.metrics[il]);
+        b.push_back(sb.metrics[il]);
+      }
+    }
+    const PairedComparison c = compare_paired(a, b, kTieTolerance);
+    char ci[64];
+    std::snprintf(ci, sizeof ci, "[%.3f,%.3f]", c.geo_mean_ci95.lo, c.geo_mean_ci95.hi);
+    std::snprintf(line, sizeof line, "%-24s %8lld %7.1f%% %10.4f %12s %8.2f %12.0f %10.1f\n",
+                  r.labels[p].c_str(), static_cast<long long>(runs),
+                  runs ? 100.0 * static_cast<double>(ok) / static_cast<double>(runs) : 0.0,
+                  c.geo_mean_ratio, p == base ? "(baseline)" : ci, summarize(turns).mean,
+                  summarize(expanded).mean, summarize(times).median);
+    out << line;
+  }
+  return out.str();
+}
+
+}  // namespace agv

@@ -1,0 +1,29 @@
+#pragma once
+// The sweep report: one JSON document (schema in reports/SCHEMA.md). Every value that depends on
+// timing lives under a key named `timing`, the machine under `environment`; everything else is a
+// pure function of the config and its seed.
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/sweep_runner.h"
+
+namespace agv {
+
+inline constexpr int kReportSchemaVersion = 1;
+
+nlohmann::json build_report(const SweepConfig& config, const SweepResults& results);
+
+// Temporary file in the same folder, fsync, rename: a reader (or a crash) sees the old report or
+// the new one, never a torn one. Creates the folder if needed. Throws std::runtime_error.
+void write_json_atomic(const nlohmann::json& document, const std::string& path);
+
+// The report without `timing` and `environment` keys at any depth: what must be byte-identical
+// between runs of the same config on any thread count.
+nlohmann::json deterministic_part(const nlohmann::json& report);
+
+// A short table for the terminal: one line per planner over the whole sweep.
+std::string summary_table(const SweepConfig& config, const SweepResults& results);
+
+}  // namespace agv

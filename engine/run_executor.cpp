@@ -1,0 +1,103 @@
+#include "engine/run_executor.h"
+
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <stdexcept>
+
+#include "algos/dijkstra.h"
+#include "engine/validator.h"
+
+namespace agv {
+
+namespace {
+constexpr std::array<std::string_view, kOutcomeCount> kOutcomeNames = {
+    "success", "no_path", "missed_path", "limit", "invalid_path", "invalid_input", "crash"};
+}
+
+std::string_view to_string(Outcome outcome) { return kOutcomeNames[static_cast<int>(outcome)]; }
+
+std::optional<Outcome> outcome_from_string(std::string_view name) {
+  for (int i = 0; i < kOutcomeCount; ++i)
+    if (kOutcomeNames[i] == name) return static_cast<Outcome>(i);
+  return std::nullopt;
+}
+
+std::optional<double> MapReference::optimal_length(CornerRule rule, Scratch& scratch) {
+  const auto r = static_cast<std::size_t>(rule);
+  if (!known_[r]) {
+    optimal_[r] = shortest_length(grid_, start_, goal_, rule, scratch);
+    known_[r] = true;
+  }
+  return optimal_[r];
+}
+
+RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scratch& scratch,
+                      Deadline deadline, const MotionTimeParams& motion) {
+  RunOutput out;
+  out.metrics.fill(std::numeric_limits<double>::quiet_NaN());
+  const PlanRequest request{map.grid(), map.start(), map.goal(), rng, scratch, deadline};
+  const std::int64_t t0 = thread_cpu_ns();
+  try {
+    out.result = planner.plan(request);
+  } catch (const std::exception& e) {
+    out.plan_time_ns = thread_cpu_ns() - t0;
+    out.outcome = Outcome::crash;
+    out.message = std::string("planner threw: ") + e.what();
+    return out;
+  } catch (...) {
+    out.plan_time_ns = thread_cpu_ns() - t0;
+    out.outcome = Outcome::crash;
+    out.message = "planner threw a non-standard exception";
+    return out;
+  }
+  out.plan_time_ns = thread_cpu_ns() - t0;
+  const PlanResult& r = out.result;
+  out.metrics[kExpandedNodesMetric] = static_cast<double>(r.expanded_nodes);
+
+  if (!r.success) {
+    out.message = r.message;
+    switch (r.failure) {
+      case Failure::limit:
+        out.outcome = Outcome::limit;
+        break;
+      case Failure::invalid_input:
+        out.outcome = Outcome::invalid_input;
+        break;
+      case Failure::invalid_path:
+        out.outcome = Outcome::invalid_path;
+        break;
+      case Failure::no_path:
+      case Failure::none:
+        // A claimed "no path" counts as such only when the map truly has none.
+        out.outcome = map.optimal_length(r.rule, scratch) ? Outcome::missed_path : Outcome::no_path;
+        break;
+    }
+    return out;
+  }
+
+  const ValidationResult v = validate_path(map.grid(), map.start(), map.goal(), r.path, r.rule);
+  if (!v.ok) {
+    out.outcome = Outcome::invalid_path;
+    out.message = v.reason;
+    return out;
+  }
+  out.outcome = Outcome::success;
+  const PathMetrics m = compute_path_metrics(map.grid(), r.path, motion);
+  const auto values = metric_values(m);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    // The names are one list; a mismatch is a bug caught here, not a mislabelled report.
+    if (values[i].first != kRunMetricNames[i]) throw std::logic_error("metric order mismatch");
+    out.metrics[i] = values[i].second;
+  }
+  // The reference is the optimum under no_corner_cut (METRICS.md); a planner allowed to cut
+  // corners can score below 1.
+  if (auto opt = map.optimal_length(CornerRule::no_corner_cut, scratch); opt && *opt > 0.0) {
+    out.metrics[kOptimalityMetric] = m.path_length / *opt;
+  } else if (opt && *opt == 0.0) {
+    out.metrics[kOptimalityMetric] = 1.0;
+  }
+  return out;
+}
+
+}  // namespace agv

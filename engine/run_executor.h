@@ -1,0 +1,71 @@
+#pragma once
+// One run: one planner on one map. The planner proposes; the engine judges. Its path is
+// validated independently and every metric is computed here from the path, so all planners are
+// measured by one ruler (METRICS.md). Used by the sweep runner and by `agvbench plan`.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "algos/planner.h"
+#include "engine/metrics.h"
+
+namespace agv {
+
+enum class Outcome {
+  success,
+  no_path,        // planner found none and none exists under its corner rule (checked)
+  missed_path,    // planner reported no path, but one exists under its corner rule
+  limit,          // time or iteration cap
+  invalid_path,   // returned path failed validation
+  invalid_input,  // planner refused the query
+  crash,          // planner threw (or, isolated, died)
+};
+inline constexpr int kOutcomeCount = 7;
+std::string_view to_string(Outcome outcome);
+std::optional<Outcome> outcome_from_string(std::string_view name);
+
+// The per-run scalar metrics, in report order; NaN where a metric does not apply.
+// The path metrics of engine/metrics.h first (metric_values order), then the engine's own.
+inline constexpr std::array<std::string_view, kPathMetricCount + 2> kRunMetricNames = {
+    "path_length",     "path_length_m",  "path_nodes",    "turns",
+    "turn_angle_rad",  "smoothness_mean", "smoothness_max", "min_clearance",
+    "min_clearance_m", "motion_time_s",  "expanded_nodes", "optimality_ratio"};
+inline constexpr std::size_t kExpandedNodesMetric = kPathMetricCount;
+inline constexpr std::size_t kOptimalityMetric = kPathMetricCount + 1;
+using RunMetrics = std::array<double, kRunMetricNames.size()>;
+
+// What the engine knows about a map, shared by every planner run on it.
+class MapReference {
+ public:
+  MapReference(const Grid& grid, Cell start, Cell goal) : grid_(grid), start_(start), goal_(goal) {}
+  const Grid& grid() const { return grid_; }
+  Cell start() const { return start_; }
+  Cell goal() const { return goal_; }
+  // Optimal 8-connected length under `rule` (Dijkstra), computed once per rule; nullopt when
+  // start and goal do not connect under it.
+  std::optional<double> optimal_length(CornerRule rule, Scratch& scratch);
+
+ private:
+  const Grid& grid_;
+  Cell start_;
+  Cell goal_;
+  std::array<bool, 3> known_{};
+  std::array<std::optional<double>, 3> optimal_{};
+};
+
+struct RunOutput {
+  Outcome outcome = Outcome::crash;
+  std::string message;
+  PlanResult result;
+  RunMetrics metrics{};
+  std::int64_t plan_time_ns = 0;
+};
+
+RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scratch& scratch,
+                      Deadline deadline, const MotionTimeParams& motion);
+
+}  // namespace agv

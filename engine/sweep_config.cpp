@@ -1,0 +1,305 @@
+#include "engine/sweep_config.h"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "generators/rng.h"
+
+namespace agv {
+
+using nlohmann::json;
+
+namespace {
+
+// Reads the fields of one JSON object, refusing keys nobody asked for.
+class ObjectReader {
+ public:
+  ObjectReader(const json& j, std::string where) : j_(j), where_(std::move(where)) {
+    if (!j_.is_object()) throw InputError(where_ + ": expected a JSON object");
+  }
+
+  bool has(const std::string& key) {
+    seen_.insert(key);
+    return j_.contains(key);
+  }
+  const json& raw(const std::string& key) {
+    seen_.insert(key);
+    return j_.at(key);
+  }
+  std::string field(const std::string& key) const { return where_ + key; }
+
+  double number(const std::string& key, double def, double lo, double hi) {
+    if (!has(key)) return def;
+    return check_number(j_.at(key), field(key), lo, hi);
+  }
+  long long integer(const std::string& key, long long def, long long lo, long long hi) {
+    if (!has(key)) return def;
+    return check_integer(j_.at(key), field(key), lo, hi);
+  }
+  bool boolean(const std::string& key, bool def) {
+    if (!has(key)) return def;
+    const json& v = j_.at(key);
+    if (!v.is_boolean()) throw InputError(field(key) + ": expected true or false");
+    return v.get<bool>();
+  }
+  std::string string(const std::string& key, const std::string& def) {
+    if (!has(key)) return def;
+    const json& v = j_.at(key);
+    if (!v.is_string()) throw InputError(field(key) + ": expected a string");
+    return v.get<std::string>();
+  }
+  std::string choice(const std::string& key, const std::string& def,
+                     const std::vector<std::string>& choices) {
+    std::string v = string(key, def);
+    for (const auto& c : choices)
+      if (c == v) return v;
+    std::string list;
+    for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+    throw InputError(field(key) + ": \"" + v + "\" is not one of: " + list);
+  }
+
+  void finish() const {
+    for (const auto& [key, value] : j_.items()) {
+      (void)value;
+      if (!seen_.count(key)) throw InputError(field(key) + ": unknown field");
+    }
+  }
+
+  static double check_number(const json& v, const std::string& field, double lo, double hi) {
+    if (!v.is_number()) throw InputError(field + ": expected a number, got " + v.dump());
+    const double x = v.get<double>();
+    if (!std::isfinite(x) || x < lo || x > hi) {
+      std::ostringstream msg;
+      msg << field << ": " << v.dump() << " is outside [" << lo << ", " << hi << "]";
+      throw InputError(msg.str());
+    }
+    return x;
+  }
+  static long long check_integer(const json& v, const std::string& field, long long lo,
+                                 long long hi) {
+    if (!v.is_number_integer())
+      throw InputError(field + ": expected an integer, got " + v.dump());
+    const auto x = v.get<long long>();
+    if (x < lo || x > hi) {
+      throw InputError(field + ": " + v.dump() + " is outside [" + std::to_string(lo) + ", " +
+                       std::to_string(hi) + "]");
+    }
+    return x;
+  }
+
+ private:
+  const json& j_;
+  std::string where_;
+  std::set<std::string> seen_;
+};
+
+const json& require_array(ObjectReader& r, const std::string& key) {
+  const json& v = r.raw(key);
+  if (!v.is_array() || v.empty()) throw InputError(r.field(key) + ": expected a non-empty array");
+  return v;
+}
+
+std::vector<GridSize> parse_sizes(ObjectReader& r) {
+  std::vector<GridSize> sizes;
+  const json& arr = require_array(r, "sizes");
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    const std::string f = r.field("sizes") + "[" + std::to_string(i) + "]";
+    const json& s = arr[i];
+    if (s.is_number_integer()) {
+      const auto n = static_cast<int>(ObjectReader::check_integer(s, f, 2, 8192));
+      sizes.push_back({n, n});
+    } else if (s.is_array() && s.size() == 2) {
+      sizes.push_back({static_cast<int>(ObjectReader::check_integer(s[0], f + "[0]", 2, 8192)),
+                       static_cast<int>(ObjectReader::check_integer(s[1], f + "[1]", 2, 8192))});
+    } else {
+      throw InputError(f + ": expected a side length or [width, height]");
+    }
+  }
+  return sizes;
+}
+
+void parse_map_options(const json& j, MapSpec& map) {
+  ObjectReader r(j, "map.");
+  const std::string endpoints = r.choice("endpoints", "corners", {"corners", "random"});
+  map.endpoints = endpoints == "corners" ? EndpointMode::corners : EndpointMode::random;
+  map.min_distance = r.number("min_distance", 0.0, 0.0, 1e6);
+  map.require_solvable = r.boolean("require_solvable", true);
+  map.solvable_rule = *corner_rule_from_string(r.choice(
+      "solvable_rule", "no_corner_cut", {"allow", "no_squeeze", "no_corner_cut"}));
+  map.max_attempts = static_cast<int>(r.integer("max_attempts", 1000, 1, 1000000));
+  map.cell_edge = r.number("cell_edge", 1.0, 1e-6, 1e6);
+  map.block_min = static_cast<int>(r.integer("block_min", map.block_min, 1, 4096));
+  map.block_max = static_cast<int>(r.integer("block_max", map.block_max, 1, 4096));
+  if (map.block_max < map.block_min)
+    throw InputError("map.block_max: must be >= map.block_min");
+  map.corridor = static_cast<int>(r.integer("corridor", map.corridor, 1, 4096));
+  map.room_size = static_cast<int>(r.integer("room_size", map.room_size, 2, 4096));
+  map.door_width = static_cast<int>(r.integer("door_width", map.door_width, 1, 4096));
+  r.finish();
+}
+
+std::vector<PlannerEntry> parse_planners(ObjectReader& r) {
+  std::vector<PlannerEntry> planners;
+  std::set<std::string> labels;
+  const json& arr = require_array(r, "planners");
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    const std::string where = "planners[" + std::to_string(i) + "]";
+    PlannerEntry e;
+    if (arr[i].is_string()) {
+      e.name = arr[i].get<std::string>();
+    } else if (arr[i].is_object()) {
+      ObjectReader p(arr[i], where + ".");
+      if (!p.has("name")) throw InputError(where + ".name: missing");
+      e.name = p.string("name", "");
+      e.label = p.string("label", "");
+      if (p.has("params")) e.params = p.raw("params");
+      p.finish();
+    } else {
+      throw InputError(where + ": expected a planner name or {\"name\": ..., \"params\": {...}}");
+    }
+    if (e.label.empty()) e.label = e.name;
+    if (!labels.insert(e.label).second)
+      throw InputError(where + ".label: \"" + e.label +
+                       "\" appears twice (give one of them a distinct \"label\")");
+    ConfiguredPlanner c = configure_planner(e.name, e.params, where + " (" + e.label + ")");
+    e.resolved = c.params.values();
+    planners.push_back(std::move(e));
+  }
+  return planners;
+}
+
+}  // namespace
+
+SweepConfig parse_config(const json& j) {
+  SweepConfig c;
+  ObjectReader r(j, "");
+  c.name = r.string("name", c.name);
+  c.seed = static_cast<std::uint64_t>(r.integer("seed", 1, 0, (1LL << 53)));
+  if (r.has("generators")) {
+    c.generators.clear();
+    const json& arr = require_array(r, "generators");
+    for (std::size_t i = 0; i < arr.size(); ++i) {
+      const std::string f = "generators[" + std::to_string(i) + "]";
+      if (!arr[i].is_string()) throw InputError(f + ": expected a generator name");
+      const auto name = arr[i].get<std::string>();
+      bool known = false;
+      for (const auto& g : generator_names()) known = known || g == name;
+      if (!known) {
+        std::string list;
+        for (const auto& g : generator_names()) list += (list.empty() ? "" : ", ") + g;
+        throw InputError(f + ": unknown generator \"" + name + "\" (known: " + list + ")");
+      }
+      c.generators.push_back(name);
+    }
+  }
+  if (r.has("sizes")) c.sizes = parse_sizes(r);
+  if (r.has("densities")) {
+    c.densities.clear();
+    const json& arr = require_array(r, "densities");
+    for (std::size_t i = 0; i < arr.size(); ++i)
+      c.densities.push_back(ObjectReader::check_number(
+          arr[i], "densities[" + std::to_string(i) + "]", 0.0, 0.95));
+  }
+  c.maps_per_cell = static_cast<int>(r.integer("maps_per_cell", c.maps_per_cell, 1, 10000000));
+  if (r.has("map")) parse_map_options(r.raw("map"), c.map);
+  if (!r.has("planners")) throw InputError("planners: missing (list at least one planner)");
+  c.planners = parse_planners(r);
+  c.baseline = r.string("baseline", "");
+  if (c.baseline.empty()) {
+    c.baseline = c.planners.front().label;
+    for (const auto& p : c.planners)
+      if (p.label == "astar") c.baseline = "astar";
+  } else {
+    bool found = false;
+    for (const auto& p : c.planners) found = found || p.label == c.baseline;
+    if (!found) throw InputError("baseline: \"" + c.baseline + "\" is not a planner label of this sweep");
+  }
+  c.time_limit_s = r.number("time_limit_s", c.time_limit_s, 1e-3, 86400.0);
+  if (r.has("motion")) {
+    ObjectReader m(r.raw("motion"), "motion.");
+    c.motion.line_speed_mps = m.number("line_speed_mps", c.motion.line_speed_mps, 1e-6, 1e6);
+    c.motion.node_time_s = m.number("node_time_s", c.motion.node_time_s, 0.0, 1e6);
+    c.motion.turn_speed_radps = m.number("turn_speed_radps", c.motion.turn_speed_radps, 1e-6, 1e6);
+    m.finish();
+  }
+  c.threads = static_cast<int>(r.integer("threads", 0, 0, 4096));
+  c.report_path = r.string("report", c.report_path);
+  c.runs_path = r.string("runs", c.runs_path);
+  if (c.report_path.empty()) throw InputError("report: must not be empty");
+  r.finish();
+  return c;
+}
+
+SweepConfig load_config(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open config file");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    // nlohmann reports a byte offset; turn it into line and column for the user.
+    std::ifstream again(path);
+    std::string text((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
+    std::size_t line = 1, col = 1;
+    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        col = 1;
+      } else {
+        ++col;
+      }
+    }
+    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(col) +
+                     ": malformed JSON (" + e.what() + ")");
+  }
+  try {
+    return parse_config(j);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
+}
+
+json config_as_run(const SweepConfig& c) {
+  json sizes = json::array();
+  for (const auto& s : c.sizes) sizes.push_back({s.width, s.height});
+  json planners = json::array();
+  for (const auto& p : c.planners)
+    planners.push_back({{"label", p.label}, {"name", p.name}, {"params", p.resolved}});
+  const MapSpec& m = c.map;
+  return {{"name", c.name},
+          {"seed", c.seed},
+          {"generators", c.generators},
+          {"sizes", sizes},
+          {"densities", c.densities},
+          {"maps_per_cell", c.maps_per_cell},
+          {"map",
+           {{"endpoints", m.endpoints == EndpointMode::corners ? "corners" : "random"},
+            {"min_distance", m.min_distance},
+            {"require_solvable", m.require_solvable},
+            {"solvable_rule", std::string(to_string(m.solvable_rule))},
+            {"max_attempts", m.max_attempts},
+            {"cell_edge", m.cell_edge},
+            {"block_min", m.block_min},
+            {"block_max", m.block_max},
+            {"corridor", m.corridor},
+            {"room_size", m.room_size},
+            {"door_width", m.door_width}}},
+          {"planners", planners},
+          {"baseline", c.baseline},
+          {"time_limit_s", c.time_limit_s},
+          {"motion",
+           {{"line_speed_mps", c.motion.line_speed_mps},
+            {"node_time_s", c.motion.node_time_s},
+            {"turn_speed_radps", c.motion.turn_speed_radps}}}};
+}
+
+std::string config_hash(const SweepConfig& c) {
+  const std::uint64_t h = stable_hash(config_as_run(c).dump());
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+}  // namespace agv

@@ -1,0 +1,60 @@
+#pragma once
+// A sweep's configuration: what maps, which planners, how many of each. Loaded from JSON with
+// every field checked at the boundary: an unknown key, a wrong type or an out-of-range value is
+// an InputError naming the field (exit code 2), never a silently ignored setting.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "algos/registry.h"
+#include "engine/metrics.h"
+#include "generators/map_generators.h"
+
+namespace agv {
+
+struct PlannerEntry {
+  std::string label;  // unique within the sweep; defaults to the registry name
+  std::string name;   // registry name
+  nlohmann::json params = nlohmann::json::object();  // as given
+  nlohmann::json resolved;                           // every parameter with its value
+};
+
+struct GridSize {
+  int width = 0;
+  int height = 0;
+};
+
+struct SweepConfig {
+  std::string name = "sweep";
+  std::uint64_t seed = 1;
+  std::vector<std::string> generators = {"uniform"};
+  std::vector<GridSize> sizes = {{64, 64}};
+  std::vector<double> densities = {0.2};
+  int maps_per_cell = 100;
+  MapSpec map;  // endpoints, require_solvable, generator shape; size/density/generator per cell
+  std::vector<PlannerEntry> planners;
+  std::string baseline;  // planner label the paired comparisons use
+  double time_limit_s = 10.0;  // per run, cooperative
+  MotionTimeParams motion;
+  // Execution settings: they change how a sweep runs, never what it reports.
+  int threads = 0;  // 0 = all hardware threads
+  std::string report_path = "reports/out/report.json";
+  std::string runs_path;  // JSON Lines of per-run records; empty = none
+};
+
+// Throws InputError naming the field.
+SweepConfig parse_config(const nlohmann::json& j);
+// Reads and parses; malformed JSON -> InputError with the file, line and column.
+SweepConfig load_config(const std::string& path);
+
+// The config as run, every default filled in, execution settings left out: the part of a
+// report that the determinism guarantee covers.
+nlohmann::json config_as_run(const SweepConfig& config);
+
+// Stable hash of config_as_run (journal compatibility, task ids).
+std::string config_hash(const SweepConfig& config);
+
+}  // namespace agv

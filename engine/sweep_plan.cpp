@@ -1,0 +1,56 @@
+#include "engine/sweep_plan.h"
+
+#include <cstdio>
+
+namespace agv {
+
+std::string density_text(double density) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", density);
+  return buf;
+}
+
+SweepPlan plan_sweep(const SweepConfig& config) {
+  SweepPlan plan;
+  plan.maps_per_cell = config.maps_per_cell;
+  for (const auto& generator : config.generators) {
+    for (const auto& size : config.sizes) {
+      for (double density : config.densities) {
+        SweepCell cell;
+        cell.index = static_cast<int>(plan.cells.size());
+        cell.generator = generator;
+        cell.size = size;
+        cell.density = density;
+        cell.key = generator + "/" + std::to_string(size.width) + "x" +
+                   std::to_string(size.height) + "/" + density_text(density);
+        cell.spec = config.map;
+        cell.spec.generator = generator;
+        cell.spec.width = size.width;
+        cell.spec.height = size.height;
+        cell.spec.density = density;
+        plan.cells.push_back(std::move(cell));
+      }
+    }
+  }
+  return plan;
+}
+
+Rng map_rng(std::uint64_t seed, const SweepCell& cell, int map_index) {
+  return Rng::for_run(seed, static_cast<std::uint64_t>(map_index), "map|" + cell.key);
+}
+
+Rng run_rng(std::uint64_t seed, const SweepCell& cell, int map_index, const std::string& label) {
+  return Rng::for_run(seed, static_cast<std::uint64_t>(map_index),
+                      "run|" + cell.key + "|" + label);
+}
+
+std::string task_id(const std::string& config_hash, const SweepCell& cell, int map_index,
+                    const std::string& label) {
+  const std::uint64_t h =
+      stable_hash(config_hash + "|" + cell.key + "|" + std::to_string(map_index) + "|" + label);
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+}  // namespace agv

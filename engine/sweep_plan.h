@@ -1,0 +1,47 @@
+#pragma once
+// A sweep expanded into its cells (generator x size x density) and map tasks (cell x map index).
+// Every id here is a pure function of the config, so a task can be named in a journal, skipped on
+// resume, or assigned to a shard.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/sweep_config.h"
+
+namespace agv {
+
+struct SweepCell {
+  int index = 0;
+  std::string generator;
+  GridSize size;
+  double density = 0.0;
+  std::string key;  // "uniform/64x64/0.2": names the cell in records and seeds its maps
+  MapSpec spec;     // the config's map options with this cell's generator, size and density
+};
+
+struct SweepPlan {
+  std::vector<SweepCell> cells;
+  int maps_per_cell = 0;
+  std::int64_t map_tasks() const {
+    return static_cast<std::int64_t>(cells.size()) * maps_per_cell;
+  }
+  // Map task t = cell t / maps_per_cell, map index t % maps_per_cell.
+  const SweepCell& cell_of(std::int64_t task) const { return cells[task / maps_per_cell]; }
+  int map_index_of(std::int64_t task) const { return static_cast<int>(task % maps_per_cell); }
+};
+
+SweepPlan plan_sweep(const SweepConfig& config);
+
+// Short text of a density that round-trips the configured value ("0.2", "0.35").
+std::string density_text(double density);
+
+// The random stream of a cell's map `map_index` and of one planner's run on it.
+Rng map_rng(std::uint64_t seed, const SweepCell& cell, int map_index);
+Rng run_rng(std::uint64_t seed, const SweepCell& cell, int map_index, const std::string& label);
+
+// Deterministic id of one run: config hash, cell, map index, planner label.
+std::string task_id(const std::string& config_hash, const SweepCell& cell, int map_index,
+                    const std::string& label);
+
+}  // namespace agv

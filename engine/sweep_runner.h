@@ -1,0 +1,63 @@
+#pragma once
+// The parallel sweep: oneTBB over map tasks; each task generates its map once and runs every
+// planner on it in config order, so all planners see the same maps (paired comparisons). Only a
+// few scalars per run are kept, indexed by task, so every statistic is computed afterwards in
+// task order and is identical on any thread count; paths and per-run records stream out.
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engine/run_executor.h"
+#include "engine/sweep_plan.h"
+
+namespace agv {
+
+// What is kept of one run after its record has been streamed.
+struct RunSlot {
+  bool done = false;
+  Outcome outcome = Outcome::crash;
+  RunMetrics metrics{};
+  std::int64_t plan_time_ns = 0;
+  std::vector<PhaseTime> phases;
+  std::vector<std::pair<std::string, double>> extra;
+};
+
+// What is kept of one map.
+struct MapSlot {
+  bool done = false;
+  int rejections = 0;
+  double obstacle_fraction = 0.0;
+};
+
+struct SweepResults {
+  SweepPlan plan;
+  std::vector<std::string> labels;  // planner labels, config order
+  std::vector<MapSlot> maps;        // by map task
+  std::vector<RunSlot> runs;        // by map task * labels.size() + planner
+  double wall_s = 0.0;
+  int threads = 0;
+  bool complete = true;
+
+  RunSlot& run(std::int64_t task, std::size_t planner) {
+    return runs[static_cast<std::size_t>(task) * labels.size() + planner];
+  }
+  const RunSlot& run(std::int64_t task, std::size_t planner) const {
+    return runs[static_cast<std::size_t>(task) * labels.size() + planner];
+  }
+};
+
+struct SweepOptions {
+  int threads = 0;        // 0 = all hardware threads
+  bool progress = false;  // progress line on stderr
+  std::string runs_path;  // JSON Lines of per-run records; empty = none
+};
+
+// Runs the sweep. Throws InputError for bad configs and std::runtime_error for failures such as
+// a generator that cannot produce a solvable map.
+SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options);
+
+}  // namespace agv

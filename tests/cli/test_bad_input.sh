@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Bad input (DEVELOPERS.md non-negotiable 5): each case must print a clear message naming the
+# field or line, exit with code 2, and leave no report file behind.
+# Usage: test_bad_input.sh AGVBENCH_BINARY MAPS_DIR
+set -u
+bin=$1
+maps=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+pass=0
+fail=0
+
+good_config() {  # a small valid config; $1 = report path
+  cat <<JSON
+{"name": "t", "seed": 1, "sizes": [16], "densities": [0.1], "maps_per_cell": 2,
+ "planners": ["astar"], "report": "$1"}
+JSON
+}
+
+# expect NAME PATTERN COMMAND...: exit code 2, stderr matching PATTERN, no report.json
+expect() {
+  local name=$1 pattern=$2
+  shift 2
+  rm -f report.json
+  "$@" >out.txt 2>err.txt
+  local code=$?
+  if [ $code -ne 2 ]; then
+    echo "FAIL $name: exit $code, expected 2"; cat err.txt; fail=$((fail + 1)); return
+  fi
+  if ! grep -qE -- "$pattern" err.txt; then
+    echo "FAIL $name: message does not match /$pattern/:"; cat err.txt; fail=$((fail + 1)); return
+  fi
+  if [ -e report.json ] || ls report.json.tmp* >/dev/null 2>&1; then
+    echo "FAIL $name: a report file was written"; fail=$((fail + 1)); return
+  fi
+  echo "ok   $name: $(head -c 200 err.txt)"
+  pass=$((pass + 1))
+}
+
+printf '{"name": "t", "sizes": [16],\n "planners": ["astar" \n' >malformed.json
+expect "malformed JSON" 'malformed.json:3' "$bin" run malformed.json --out report.json
+
+good_config report.json | sed 's/"astar"/"warp_drive"/' >unknown_planner.json
+expect "unknown planner" 'unknown planner "warp_drive"' "$bin" run unknown_planner.json
+
+good_config report.json | sed 's/"astar"/{"name": "astar", "params": {"bogus": 1}}/' >unknown_param.json
+expect "unknown parameter" 'params.bogus: unknown parameter' "$bin" run unknown_param.json
+
+good_config report.json | sed 's/"astar"/{"name": "astar", "params": {"diagonal_cost": 7}}/' >range_param.json
+expect "parameter out of range" 'diagonal_cost: 7 is outside' "$bin" run range_param.json
+
+good_config report.json | sed 's/0.1\]/1.5]/' >density.json
+expect "density out of range" 'densities\[0\]: 1.5 is outside' "$bin" run density.json
+
+good_config report.json | sed 's/"maps_per_cell": 2/"maps_per_cell": -3/' >maps.json
+expect "maps_per_cell out of range" 'maps_per_cell: -3 is outside' "$bin" run maps.json
+
+good_config report.json | sed 's/"seed": 1/"seed": 1, "sede": 2/' >typo.json
+expect "unknown field" 'sede: unknown field' "$bin" run typo.json
+
+expect "missing config file" 'nope.json: cannot open' "$bin" run nope.json --out report.json
+expect "validate: unknown planner" 'unknown planner' "$bin" validate unknown_planner.json
+
+printf 'type octile\nheight 3\nwidth 3\nmap\n...\n.x.\n...\n' >badchar.map
+expect "map: bad character" 'badchar.map:6' "$bin" plan --map badchar.map --start 0,0 --goal 2,2
+printf 'type octile\nheight 4\nwidth 3\nmap\n...\n...\n' >short.map
+expect "map: too few rows" 'short.map' "$bin" plan --map short.map --start 0,0 --goal 2,2
+expect "map: unreadable" 'missing.map' "$bin" plan --map missing.map --start 0,0 --goal 1,1
+printf 'type octile\nheight 3\nwidth 3\nmap\n...\n.@.\n...\n' >ok.map
+expect "start outside the grid" '--start: \(5,0\) is outside' "$bin" plan --map ok.map --start 5,0 --goal 2,2
+expect "goal on an obstacle" '--goal: \(1,1\) is an obstacle' "$bin" plan --map ok.map --start 0,0 --goal 1,1
+expect "unknown CLI planner" 'unknown planner "nope"' "$bin" plan --planner nope
+expect "unknown CLI parameter" '--param frobnicate' "$bin" plan --param frobnicate=3
+printf 'version 1\n0\tok.map\t3\t3\t0\t0\t1\t1\t1.41421356\n' >obstacle.scen
+expect "scen: goal on an obstacle" 'query 1: goal \(1,1\) is an obstacle' "$bin" scen ok.map obstacle.scen
+printf 'version 1\n0\tok.map\t3\t3\t0\t0\tx\t1\t1.4\n' >garbled.scen
+expect "scen: malformed line" 'garbled.scen:2' "$bin" scen ok.map garbled.scen
+expect "CLI: bad option value" 'threads' "$bin" run --threads -4
+
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]

@@ -26,6 +26,10 @@ struct PlannerInfo {
 };
 
 const std::vector<PlannerInfo>& planner_registry();
+// For test binaries only, before any sweep starts: makes a planner findable by name without
+// putting it in the real registry (the isolation tests' deliberately faulty planners).
+void add_planner_for_testing(PlannerInfo info);
+
 // nullptr when unknown.
 const PlannerInfo* find_planner(std::string_view name);
 

@@ -1,10 +1,15 @@
 // `agvbench run`, `validate` and `list`.
+#include <signal.h>
+
+#include <atomic>
 #include <cstdio>
+#include <tuple>
 #include <filesystem>
 #include <iostream>
 
 #include "algos/registry.h"
 #include "engine/commands.h"
+#include "engine/journal.h"
 #include "engine/report.h"
 #include "engine/sweep_runner.h"
 
@@ -16,6 +21,29 @@ namespace agv {
 
 namespace {
 
+std::atomic<bool> g_stop{false};
+
+extern "C" void request_stop(int) { g_stop.store(true); }
+
+// SIGINT/SIGTERM: stop taking tasks, let runs in flight finish, write what was done.
+void install_stop_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = request_stop;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+std::pair<int, int> parse_shard(const std::string& text) {
+  int i = 0, n = 0, used = 0;
+  if (std::sscanf(text.c_str(), "%d/%d%n", &i, &n, &used) != 2 ||
+      used != static_cast<int>(text.size()) || n < 1 || i < 0 || i >= n)
+    throw InputError("--shard: expected i/N with 0 <= i < N, got \"" + text + "\"");
+  return {i, n};
+}
+
+}  // namespace
+
 // The default config is found from any working directory: first as given, then in the checkout
 // the binary was built from.
 std::string locate_config(const std::string& path) {
@@ -26,8 +54,6 @@ std::string locate_config(const std::string& path) {
   return path;
 }
 
-}  // namespace
-
 int command_run(const RunCommand& cmd) {
   SweepConfig config = load_config(locate_config(cmd.config));
   if (cmd.threads >= 0) config.threads = cmd.threads;
@@ -37,7 +63,14 @@ int command_run(const RunCommand& cmd) {
   SweepOptions options;
   options.threads = config.threads;
   options.progress = !cmd.quiet;
-  options.runs_path = config.runs_path;
+  options.runs_path = cmd.resume.empty() ? config.runs_path : cmd.resume;
+  options.resume_path = cmd.resume;
+  if (!cmd.shard.empty()) std::tie(options.shard_index, options.shard_count) = parse_shard(cmd.shard);
+  options.isolation.enabled = cmd.isolate;
+  options.isolation.hard_limit_s = cmd.isolate_timeout_s;
+  options.isolation.memory_mb = cmd.isolate_memory_mb;
+  options.stop = &g_stop;
+  install_stop_handlers();
   const SweepPlan plan = plan_sweep(config);
   if (!cmd.quiet) {
     std::fprintf(stderr, "agvbench: sweep \"%s\": %zu cells x %d maps x %zu planners = %lld runs\n",
@@ -47,14 +80,46 @@ int command_run(const RunCommand& cmd) {
   }
   SweepResults results = run_sweep(config, options);
   write_json_atomic(build_report(config, results), config.report_path);
+  if (results.interrupted) {
+    std::fprintf(stderr,
+                 "agvbench: interrupted: %lld runs done this time, %lld restored; report (marked "
+                 "incomplete): %s; resume with --resume %s\n",
+                 static_cast<long long>(results.executed_runs),
+                 static_cast<long long>(results.restored_runs), config.report_path.c_str(),
+                 options.runs_path.empty() ? "JOURNAL (none was written: use --runs-out)"
+                                           : options.runs_path.c_str());
+    return 130;
+  }
   if (!cmd.quiet) {
     std::cout << summary_table(config, results);
-    std::printf("\n%lld runs in %.2f s on %d threads (%.0f runs/s); report: %s\n",
-                static_cast<long long>(results.runs.size()), results.wall_s, results.threads,
-                results.wall_s > 0 ? static_cast<double>(results.runs.size()) / results.wall_s : 0.0,
+    std::printf("\n%lld runs in %.2f s on %d threads (%.0f runs/s)%s; report: %s\n",
+                static_cast<long long>(results.executed_runs), results.wall_s, results.threads,
+                results.wall_s > 0 ? static_cast<double>(results.executed_runs) / results.wall_s : 0.0,
+                results.restored_runs > 0
+                    ? (", " + std::to_string(results.restored_runs) + " restored").c_str()
+                    : "",
                 config.report_path.c_str());
   }
   return 0;
+}
+
+int command_merge(const std::string& config_path, const std::vector<std::string>& journals,
+                  const std::string& out) {
+  const SweepConfig config = load_config(locate_config(config_path));
+  SweepResults results = empty_results(config);
+  const std::string hash = config_hash(config);
+  std::int64_t records = 0;
+  for (const auto& j : journals) records += restore_journal(j, hash, results).records;
+  update_completeness(results);
+  const std::string path = out.empty() ? config.report_path : out;
+  write_json_atomic(build_report(config, results), path);
+  std::int64_t present = 0;
+  for (const auto& r : results.runs) present += r.done ? 1 : 0;
+  std::printf("merged %zu journals: %lld of %zu runs present%s; report: %s\n", journals.size(),
+              static_cast<long long>(present), results.runs.size(),
+              results.complete ? "" : " (INCOMPLETE coverage: the report says so)", path.c_str());
+  (void)records;
+  return results.complete ? 0 : 1;
 }
 
 int command_validate(const std::string& config_path) {

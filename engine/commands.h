@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/sweep_config.h"
+
 namespace agv {
 
 struct RunCommand {
@@ -12,9 +14,22 @@ struct RunCommand {
   int threads = -1;  // -1: the config's value
   std::string out;   // overrides the config's report path
   std::string runs_out;
+  std::string resume;  // journal to resume from (appended to)
+  std::string shard;   // "i/N"
+  bool isolate = false;
+  double isolate_timeout_s = 0.0;  // 0: twice the config's time limit + 1 s
+  long long isolate_memory_mb = 4096;
   bool quiet = false;
 };
+// Exit code 130 when interrupted by SIGINT/SIGTERM (the report is written, marked incomplete).
 int command_run(const RunCommand& cmd);
+
+// Builds one report from the journals of a sharded (or interrupted) sweep.
+int command_merge(const std::string& config_path, const std::vector<std::string>& journals,
+                  const std::string& out);
+
+// The config file, found from any working directory: as given, else in the source checkout.
+std::string locate_config(const std::string& path);
 
 int command_validate(const std::string& config_path);
 

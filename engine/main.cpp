@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "engine/commands.h"
+#include "engine/isolated_worker.h"
 #include "generators/input_error.h"
 
 int main(int argc, char** argv) {
@@ -17,7 +18,27 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads, "worker threads (0 = all)")->check(CLI::Range(0, 4096));
   run_cmd->add_option("--out", run.out, "report path (overrides the config)");
   run_cmd->add_option("--runs-out", run.runs_out, "JSON Lines file of per-run records");
+  run_cmd->add_option("--resume", run.resume, "journal of an interrupted run: skip its runs, append to it");
+  run_cmd->add_option("--shard", run.shard, "i/N: run only the i-th of N slices (split by map)");
+  run_cmd->add_flag("--isolate", run.isolate, "run planners in worker processes (fault isolation)");
+  run_cmd->add_option("--isolate-timeout", run.isolate_timeout_s,
+                      "hard wall-clock limit per run in seconds (default 2x time_limit_s + 1)")
+      ->check(CLI::PositiveNumber);
+  run_cmd->add_option("--isolate-memory", run.isolate_memory_mb, "address-space cap per worker, MiB")
+      ->check(CLI::Range(64LL, 1LL << 40));
   run_cmd->add_flag("--quiet", run.quiet, "no progress meter and no summary table");
+
+  std::string merge_config, merge_out;
+  std::vector<std::string> merge_journals;
+  auto* merge_cmd = app.add_subcommand("merge", "build one report from shard or partial journals");
+  merge_cmd->add_option("journals", merge_journals, "JSON Lines journals")->required();
+  merge_cmd->add_option("--config", merge_config, "the sweep config the journals belong to")->required();
+  merge_cmd->add_option("--out", merge_out, "report path (default: the config's)");
+
+  long long worker_memory = 0;
+  auto* worker_cmd = app.add_subcommand("worker", "");  // internal: an --isolate worker process
+  worker_cmd->add_option("--memory-mb", worker_memory);
+  worker_cmd->group("");
 
   std::string validate_path;
   auto* validate_cmd = app.add_subcommand("validate", "check a sweep config without running it");
@@ -62,6 +83,8 @@ int main(int argc, char** argv) {
 
   try {
     if (*run_cmd) return agv::command_run(run);
+    if (*merge_cmd) return agv::command_merge(merge_config, merge_journals, merge_out);
+    if (*worker_cmd) return agv::worker_main(worker_memory);
     if (*validate_cmd) return agv::command_validate(validate_path);
     if (*list_cmd) return agv::command_list(list_json);
     if (*plan_cmd) return agv::command_plan(plan);

@@ -185,16 +185,30 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
                      {"planners", planners},
                      {"paired", paired_cell_json(config, r, cell)}});
   }
-  return {{"schema_version", kReportSchemaVersion},
+  std::int64_t maps_missing = 0;
+  for (std::int64_t t = 0; t < r.plan.map_tasks(); ++t) {
+    bool any = false;
+    for (std::size_t p = 0; p < r.labels.size(); ++p) any = any || r.run(t, p).done;
+    maps_missing += any ? 0 : 1;
+  }
+  json report = {{"schema_version", kReportSchemaVersion},
           {"tool", "agvbench"},
           {"config", config_as_run(config)},
           {"complete", r.complete},
+          {"coverage",
+           {{"runs_expected", static_cast<std::int64_t>(r.runs.size())},
+            {"runs_present", runs_done},
+            {"maps_missing", maps_missing}}},
           {"totals", {{"cells", r.plan.cells.size()}, {"maps", r.plan.map_tasks()}, {"runs", runs_done}}},
           {"cells", cells},
           {"environment", environment_json(r.threads)},
           {"timing",
            {{"wall_s", r.wall_s},
-            {"runs_per_s", r.wall_s > 0 ? static_cast<double>(runs_done) / r.wall_s : 0.0}}}};
+            {"executed_runs", r.executed_runs},
+            {"runs_per_s",
+             r.wall_s > 0 ? static_cast<double>(r.executed_runs) / r.wall_s : 0.0}}}};
+  if (r.shard_count > 1) report["shard"] = {{"index", r.shard_index}, {"count", r.shard_count}};
+  return report;
 }
 
 void write_json_atomic(const json& document, const std::string& path) {

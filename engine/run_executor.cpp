@@ -3,6 +3,7 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <new>
 #include <stdexcept>
 
 #include "algos/dijkstra.h"
@@ -12,7 +13,8 @@ namespace agv {
 
 namespace {
 constexpr std::array<std::string_view, kOutcomeCount> kOutcomeNames = {
-    "success", "no_path", "missed_path", "limit", "invalid_path", "invalid_input", "crash"};
+    "success", "no_path", "missed_path", "limit", "invalid_path", "invalid_input", "crash",
+    "timeout", "oom"};
 }
 
 std::string_view to_string(Outcome outcome) { return kOutcomeNames[static_cast<int>(outcome)]; }
@@ -40,6 +42,11 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
   const std::int64_t t0 = thread_cpu_ns();
   try {
     out.result = planner.plan(request);
+  } catch (const std::bad_alloc&) {
+    out.plan_time_ns = thread_cpu_ns() - t0;
+    out.outcome = Outcome::oom;
+    out.message = "planner ran out of memory";
+    return out;
   } catch (const std::exception& e) {
     out.plan_time_ns = thread_cpu_ns() - t0;
     out.outcome = Outcome::crash;

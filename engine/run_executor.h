@@ -22,9 +22,11 @@ enum class Outcome {
   limit,          // time or iteration cap
   invalid_path,   // returned path failed validation
   invalid_input,  // planner refused the query
-  crash,          // planner threw (or, isolated, died)
+  crash,          // planner threw, or (isolated) its process died of a signal
+  timeout,        // isolated: killed at the hard wall-clock limit
+  oom,            // isolated: ran out of its address-space cap
 };
-inline constexpr int kOutcomeCount = 7;
+inline constexpr int kOutcomeCount = 9;
 std::string_view to_string(Outcome outcome);
 std::optional<Outcome> outcome_from_string(std::string_view name);
 

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/isolated_worker.h"
 #include "engine/run_executor.h"
 #include "engine/sweep_plan.h"
 
@@ -40,7 +41,12 @@ struct SweepResults {
   std::vector<RunSlot> runs;        // by map task * labels.size() + planner
   double wall_s = 0.0;
   int threads = 0;
-  bool complete = true;
+  bool complete = true;      // every run of the sweep is present
+  bool interrupted = false;  // stopped before its tasks were done
+  std::int64_t restored_runs = 0;
+  std::int64_t executed_runs = 0;
+  int shard_index = 0;
+  int shard_count = 1;
 
   RunSlot& run(std::int64_t task, std::size_t planner) {
     return runs[static_cast<std::size_t>(task) * labels.size() + planner];
@@ -53,8 +59,23 @@ struct SweepResults {
 struct SweepOptions {
   int threads = 0;        // 0 = all hardware threads
   bool progress = false;  // progress line on stderr
-  std::string runs_path;  // JSON Lines of per-run records; empty = none
+  std::string runs_path;  // JSON Lines of per-run records (the journal); empty = none
+  // Resume: restore the runs recorded in this journal, run only the others, and append their
+  // records to it (runs_path must then be empty or the same file).
+  std::string resume_path;
+  // Sharding: run only map tasks t with t % shard_count == shard_index. Split by map, so every
+  // planner of a map runs in the same shard and paired comparisons stay whole.
+  int shard_index = 0;
+  int shard_count = 1;
+  // Set (by a signal handler, say) to stop taking new map tasks; runs in flight finish.
+  const std::atomic<bool>* stop = nullptr;
+  IsolationOptions isolation;
 };
+
+// Empty results shaped for the config: every slot present, none done (resume and merge fill them).
+SweepResults empty_results(const SweepConfig& config);
+// Recomputes `complete` from the slots.
+void update_completeness(SweepResults& results);
 
 // Runs the sweep. Throws InputError for bad configs and std::runtime_error for failures such as
 // a generator that cannot produce a solvable map.

@@ -1,0 +1,214 @@
+#include "engine/isolated_worker.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+
+#include "engine/run_record.h"
+#include "engine/sweep_plan.h"
+
+extern char** environ;
+
+namespace agv {
+
+namespace {
+
+void write_all(int fd, const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw std::runtime_error("worker pipe closed");
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+}  // namespace
+
+WorkerProcess::WorkerProcess(std::vector<std::string> command, std::int64_t memory_mb,
+                             std::string config_line)
+    : command_(std::move(command)), memory_mb_(memory_mb), config_line_(std::move(config_line)) {
+  // A write to a worker that just died must be an error to handle, not a fatal SIGPIPE.
+  ::signal(SIGPIPE, SIG_IGN);
+  spawn();
+}
+
+WorkerProcess::~WorkerProcess() { stop(); }
+
+void WorkerProcess::spawn() {
+  int in_pipe[2], out_pipe[2];
+  if (::pipe2(in_pipe, O_CLOEXEC) != 0 || ::pipe2(out_pipe, O_CLOEXEC) != 0)
+    throw std::runtime_error("cannot create worker pipes");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, in_pipe[0], STDIN_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, out_pipe[1], STDOUT_FILENO);
+  std::vector<std::string> args = command_;
+  args.push_back("--memory-mb");
+  args.push_back(std::to_string(memory_mb_));
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const int rc = posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(in_pipe[0]);
+  ::close(out_pipe[1]);
+  if (rc != 0) {
+    ::close(in_pipe[1]);
+    ::close(out_pipe[0]);
+    pid_ = -1;
+    throw std::runtime_error("cannot start worker " + command_.front() + ": " + std::strerror(rc));
+  }
+  to_child_ = in_pipe[1];
+  from_child_ = out_pipe[0];
+  buffer_.clear();
+  write_all(to_child_, config_line_ + "\n");
+}
+
+void WorkerProcess::stop() {
+  if (pid_ > 0) {
+    ::kill(pid_, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+  }
+  if (to_child_ >= 0) ::close(to_child_);
+  if (from_child_ >= 0) ::close(from_child_);
+  pid_ = -1;
+  to_child_ = from_child_ = -1;
+}
+
+std::string WorkerProcess::describe_exit() {
+  int status = 0;
+  pid_t r;
+  while ((r = ::waitpid(pid_, &status, 0)) < 0 && errno == EINTR) {
+  }
+  pid_ = -1;
+  if (r > 0 && WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    return std::string("worker killed by signal ") + std::to_string(sig) + " (" +
+           (sigdescr_np(sig) ? sigdescr_np(sig) : "?") + ")";
+  }
+  if (r > 0 && WIFEXITED(status))
+    return "worker exited with code " + std::to_string(WEXITSTATUS(status));
+  return "worker vanished";
+}
+
+WorkerProcess::Reply WorkerProcess::run(std::int64_t task, std::size_t planner,
+                                        double hard_limit_s) {
+  using Clock = std::chrono::steady_clock;
+  Reply reply;
+  if (pid_ < 0) spawn();
+  const auto start = Clock::now();
+  const auto deadline =
+      start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(hard_limit_s));
+  try {
+    write_all(to_child_, nlohmann::json{{"task", task}, {"planner", planner}}.dump() + "\n");
+  } catch (const std::runtime_error&) {
+    // Died between runs; fall through to reading, which reports the death.
+  }
+  for (;;) {
+    const auto nl = buffer_.find('\n');
+    if (nl != std::string::npos) {
+      const std::string line = buffer_.substr(0, nl);
+      buffer_.erase(0, nl + 1);
+      reply.wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
+      reply.record = nlohmann::json::parse(line, nullptr, false);
+      if (reply.record.is_discarded()) {
+        reply.outcome = Outcome::crash;
+        reply.message = "worker sent a malformed record";
+        stop();
+        return reply;
+      }
+      reply.ok = true;
+      return reply;
+    }
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (left <= 0) {
+      stop();
+      reply.wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
+      reply.outcome = Outcome::timeout;
+      reply.message = "killed at the hard limit of " + std::to_string(hard_limit_s) + " s";
+      return reply;
+    }
+    pollfd pfd{from_child_, POLLIN, 0};
+    const int pr = ::poll(&pfd, 1, static_cast<int>(std::min<long long>(left, 1000)));
+    if (pr < 0 && errno == EINTR) continue;
+    if (pr <= 0) continue;
+    char buf[65536];
+    const ssize_t n = ::read(from_child_, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      reply.wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
+      reply.outcome = Outcome::crash;
+      reply.message = describe_exit();
+      ::close(to_child_);
+      ::close(from_child_);
+      to_child_ = from_child_ = -1;
+      return reply;
+    }
+    buffer_.append(buf, static_cast<std::size_t>(n));
+  }
+}
+
+int worker_main(std::int64_t memory_mb) {
+  if (memory_mb > 0) {
+    const rlim_t bytes = static_cast<rlim_t>(memory_mb) * 1024 * 1024;
+    rlimit lim{bytes, bytes};
+    if (::setrlimit(RLIMIT_AS, &lim) != 0) {
+      std::cerr << "worker: cannot set RLIMIT_AS\n";
+      return 1;
+    }
+  }
+  std::string line;
+  if (!std::getline(std::cin, line)) return 1;
+  const SweepConfig config = parse_config(nlohmann::json::parse(line).at("config"));
+  const SweepPlan plan = plan_sweep(config);
+  const std::string hash = config_hash(config);
+  std::vector<ConfiguredPlanner> planners;
+  for (std::size_t i = 0; i < config.planners.size(); ++i)
+    planners.push_back(configure_planner(config.planners[i].name, config.planners[i].params,
+                                         "planners[" + std::to_string(i) + "]"));
+  Scratch scratch;
+  std::int64_t cached_task = -1;
+  std::optional<MapInstance> map;
+  MapSlot slot;
+  const auto budget = std::chrono::duration_cast<std::chrono::nanoseconds>(
+      std::chrono::duration<double>(config.time_limit_s));
+  while (std::getline(std::cin, line)) {
+    const auto req = nlohmann::json::parse(line);
+    const auto task = req.at("task").get<std::int64_t>();
+    const auto p = req.at("planner").get<std::size_t>();
+    const SweepCell& cell = plan.cell_of(task);
+    const int map_index = plan.map_index_of(task);
+    if (task != cached_task) {
+      Rng rng = map_rng(config.seed, cell, map_index);
+      map = make_map(cell.spec, rng);
+      slot.rejections = map->rejections;
+      slot.obstacle_fraction = static_cast<double>(map->grid.obstacle_count()) /
+                               (static_cast<double>(map->grid.width()) * map->grid.height());
+      cached_task = task;
+    }
+    MapReference ref(map->grid, map->start, map->goal);
+    Rng prng = run_rng(config.seed, cell, map_index, config.planners[p].label);
+    const RunOutput out = execute_run(*planners[p].planner, ref, prng, scratch,
+                                      Deadline::after(budget), config.motion);
+    std::cout << run_record(hash, config.seed, cell, map_index, config.planners[p], slot, out).dump()
+              << "\n"
+              << std::flush;
+  }
+  return 0;
+}
+
+}  // namespace agv

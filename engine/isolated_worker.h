@@ -1,0 +1,68 @@
+#pragma once
+// Fault isolation (`agvbench run --isolate`): runs execute in child worker processes, each with
+// an address-space cap (RLIMIT_AS), under a hard wall-clock limit enforced by the parent. A
+// planner that hangs, crashes, throws or exhausts memory costs one run (outcome timeout, crash
+// or oom) and one worker restart; the sweep goes on.
+//
+// Protocol, one JSON object per line over the worker's stdin/stdout: the parent sends the config
+// as run ({"config": ...}) once, then requests {"task": t, "planner": p}; the worker answers each
+// with the run's record (engine/run_record.h). Workers are started with posix_spawn, which is
+// safe from a multi-threaded parent (no fork of a process holding other threads' locks).
+
+#include <sys/types.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/run_executor.h"
+
+namespace agv {
+
+struct IsolationOptions {
+  bool enabled = false;
+  double hard_limit_s = 0.0;        // per run; 0 = twice the config's time_limit_s + 1 s
+  std::int64_t memory_mb = 4096;    // RLIMIT_AS of each worker
+  // The worker program: default this executable's `worker` subcommand. Tests pass their own
+  // binary, whose registry has deliberately faulty planners.
+  std::vector<std::string> command;
+};
+
+class WorkerProcess {
+ public:
+  WorkerProcess(std::vector<std::string> command, std::int64_t memory_mb, std::string config_line);
+  ~WorkerProcess();
+  WorkerProcess(const WorkerProcess&) = delete;
+  WorkerProcess& operator=(const WorkerProcess&) = delete;
+
+  struct Reply {
+    bool ok = false;          // record holds the worker's record
+    nlohmann::json record;
+    Outcome outcome = Outcome::crash;  // when !ok: timeout or crash
+    std::string message;
+    std::int64_t wall_ns = 0;
+  };
+  // One run; restarts the worker after a timeout or a death.
+  Reply run(std::int64_t task, std::size_t planner, double hard_limit_s);
+
+ private:
+  void spawn();
+  void stop();  // kill and reap
+  std::string describe_exit();
+
+  std::vector<std::string> command_;
+  std::int64_t memory_mb_;
+  std::string config_line_;
+  pid_t pid_ = -1;
+  int to_child_ = -1;
+  int from_child_ = -1;
+  std::string buffer_;
+};
+
+// The worker side: `agvbench worker --memory-mb N` (or a test binary's equivalent). Returns the
+// process exit code.
+int worker_main(std::int64_t memory_mb);
+
+}  // namespace agv

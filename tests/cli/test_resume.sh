@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# Sweeps that survive (issue 8): SIGINT at about 10%, 50% and 90% of a sweep, then --resume:
+# the final report equals the uninterrupted one (non-timing fields) and no run appears twice in
+# the journal. Then SIGKILL at random moments, report writing included: the report on disk
+# always parses. Usage: test_resume.sh AGVBENCH SOURCE_DIR
+set -u
+bin=$1
+src=$2
+py=/usr/bin/python3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+pass=0
+fail=0
+ok() { echo "ok   $1"; pass=$((pass + 1)); }
+bad() { echo "FAIL $1"; fail=$((fail + 1)); }
+
+cat >config.json <<'JSON'
+{"name": "resume-test", "seed": 11, "generators": ["uniform", "rooms"], "sizes": [48, 96],
+ "densities": [0.1, 0.3], "maps_per_cell": 150, "planners": ["astar", "dijkstra"],
+ "report": "unused.json"}
+JSON
+total=$((2 * 2 * 2 * 150 * 2))
+
+cat >same.py <<'EOF_PY'
+import json, sys
+def strip(o):
+    if isinstance(o, dict):
+        return {k: strip(v) for k, v in o.items() if k not in ("timing", "environment")}
+    if isinstance(o, list):
+        return [strip(v) for v in o]
+    return o
+a, b = (strip(json.load(open(p))) for p in sys.argv[1:3])
+sys.exit(0 if a == b else 1)
+EOF_PY
+cat >journal_ok.py <<'EOF_PY'
+import json, sys
+ids = [json.loads(l)["task_id"] for l in open(sys.argv[1]) if l.strip()]
+dup = len(ids) - len(set(ids))
+print(f"{len(ids)} records, {dup} duplicates")
+sys.exit(0 if dup == 0 and len(ids) == int(sys.argv[2]) else 1)
+EOF_PY
+
+"$bin" run config.json --threads 2 --out full.json --quiet || { bad "uninterrupted run"; exit 1; }
+
+for pct in 10 50 90; do
+  rm -f j.jsonl part.json final.json
+  "$bin" run config.json --threads 2 --out part.json --runs-out j.jsonl --quiet &
+  pid=$!
+  want=$((total * pct / 100))
+  for _ in $(seq 1 600); do
+    n=$(wc -l <j.jsonl 2>/dev/null || echo 0)
+    [ "$n" -ge "$want" ] && break
+    kill -0 $pid 2>/dev/null || break
+    sleep 0.01
+  done
+  kill -INT $pid 2>/dev/null
+  wait $pid
+  code=$?
+  done_lines=$(wc -l <j.jsonl)
+  if [ $code -eq 130 ]; then
+    $py -c "import json,sys; r=json.load(open('part.json')); sys.exit(0 if r['complete'] is False else 1)" \
+      && ok "SIGINT at ~$pct% ($done_lines/$total runs): exit 130, report marked incomplete" \
+      || bad "SIGINT at ~$pct%: report not marked incomplete"
+  elif [ $code -eq 0 ]; then
+    echo "note: the sweep finished before SIGINT at ~$pct% arrived"
+  else
+    bad "SIGINT at ~$pct%: exit $code"
+  fi
+  "$bin" run config.json --threads 2 --out final.json --resume j.jsonl --quiet
+  [ $? -eq 0 ] || bad "resume after ~$pct%: non-zero exit"
+  $py same.py full.json final.json && ok "resume after ~$pct%: report equals the uninterrupted one" \
+    || bad "resume after ~$pct%: report differs"
+  $py journal_ok.py j.jsonl $total && ok "resume after ~$pct%: every run exactly once" \
+    || bad "resume after ~$pct%: runs missing or repeated"
+done
+
+# A torn last line (a kill mid-write) is tolerated and cut before appending.
+rm -f j.jsonl
+"$bin" run config.json --threads 2 --out part.json --runs-out j.jsonl --quiet
+head -c -40 j.jsonl >t.jsonl && head -n 100 t.jsonl >j2.jsonl && tail -c 70 t.jsonl | head -c 50 >>j2.jsonl
+"$bin" run config.json --threads 2 --out final.json --resume j2.jsonl --quiet \
+  && $py same.py full.json final.json && $py journal_ok.py j2.jsonl $total \
+  && ok "torn last line tolerated" || bad "torn last line"
+
+# A journal of another config is refused.
+sed 's/"seed": 11/"seed": 12/' config.json >other.json
+"$bin" run other.json --out o.json --resume j.jsonl --quiet 2>err.txt
+[ $? -eq 2 ] && grep -q "different config" err.txt && [ ! -e o.json ] \
+  && ok "journal of another config refused: $(head -c 150 err.txt)" || bad "foreign journal accepted"
+
+# SIGKILL at random moments: the report is the old one or the new one, never torn.
+cat >small.json <<'JSON'
+{"name": "kill-test", "seed": 3, "sizes": [64], "densities": [0.2], "maps_per_cell": 200,
+ "planners": ["astar", "dijkstra"], "report": "unused.json"}
+JSON
+echo '{"old": true}' >r.json
+torn=0
+trials=40
+for i in $(seq 1 $trials); do
+  "$bin" run small.json --threads 2 --out r.json --quiet &
+  pid=$!
+  sleep "0.$((RANDOM % 40))"
+  kill -KILL $pid 2>/dev/null
+  wait $pid 2>/dev/null
+  $py -c "import json; json.load(open('r.json'))" 2>/dev/null || torn=$((torn + 1))
+done
+[ $torn -eq 0 ] && ok "SIGKILL x$trials: the report always parses" || bad "SIGKILL: $torn torn reports"
+
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]

@@ -1,0 +1,186 @@
+// Fault isolation: deliberately faulty planners, compiled into this test binary only, run under
+// `--isolate`-style worker processes (this binary is its own worker). Each fault costs exactly
+// one run, recorded with its outcome within 1.25x the hard limit; every other run is present.
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <cstring>
+#include <new>
+#include <thread>
+#include <vector>
+
+#include "algos/registry.h"
+#include "engine/isolated_worker.h"
+#include "engine/report.h"
+#include "engine/sweep_runner.h"
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kSanitized = true;  // sanitizers reserve terabytes of address space: no RLIMIT_AS
+#else
+constexpr bool kSanitized = false;
+#endif
+
+namespace agv {
+namespace {
+
+std::string g_self;
+
+enum class Fault { hang, segfault, throws, hog };
+
+class FaultyPlanner : public Planner {
+ public:
+  explicit FaultyPlanner(Fault f) : fault_(f) {}
+  PlanResult plan(const PlanRequest& req) const override {
+    if (trigger(req)) {
+      switch (fault_) {
+        case Fault::hang:
+          for (volatile bool spin = true; spin;) {
+          }
+          break;
+        case Fault::segfault:
+          std::raise(SIGSEGV);
+          break;
+        case Fault::throws:
+          throw std::runtime_error("deliberate failure");
+        case Fault::hog: {
+          std::vector<std::vector<char>> hog;
+          for (;;) hog.emplace_back(std::size_t{64} << 20, char{1});
+        }
+      }
+    }
+    return PlanResult::failed(Failure::invalid_input, "faulty test planner: no plan");
+  }
+
+ private:
+  // About one run in four faults; the run's own RNG decides, so the same runs fault every time.
+  static bool trigger(const PlanRequest& req) { return (req.rng.next_u32() & 3U) == 0; }
+  Fault fault_;
+};
+
+PlannerInfo faulty(const std::string& name, Fault f) {
+  PlannerInfo info;
+  info.name = name;
+  info.summary = "deliberately faulty test planner";
+  switch (f) {
+    case Fault::hang:
+      info.make = [](const Params&) -> std::unique_ptr<Planner> { return std::make_unique<FaultyPlanner>(Fault::hang); };
+      break;
+    case Fault::segfault:
+      info.make = [](const Params&) -> std::unique_ptr<Planner> { return std::make_unique<FaultyPlanner>(Fault::segfault); };
+      break;
+    case Fault::throws:
+      info.make = [](const Params&) -> std::unique_ptr<Planner> { return std::make_unique<FaultyPlanner>(Fault::throws); };
+      break;
+    case Fault::hog:
+      info.make = [](const Params&) -> std::unique_ptr<Planner> { return std::make_unique<FaultyPlanner>(Fault::hog); };
+      break;
+  }
+  return info;
+}
+
+void register_faulty_planners() {
+  add_planner_for_testing(faulty("test_hang", Fault::hang));
+  add_planner_for_testing(faulty("test_segfault", Fault::segfault));
+  add_planner_for_testing(faulty("test_throw", Fault::throws));
+  add_planner_for_testing(faulty("test_hog", Fault::hog));
+}
+
+SweepConfig faulty_config(std::vector<std::string> faulty_names) {
+  nlohmann::json planners = nlohmann::json::array({"astar"});
+  for (auto& n : faulty_names) planners.push_back(n);
+  planners.push_back("dijkstra");
+  return parse_config({{"sizes", {16}},
+                       {"densities", {0.1}},
+                       {"maps_per_cell", 8},
+                       {"time_limit_s", 0.5},
+                       {"planners", planners}});
+}
+
+SweepOptions isolated(double hard_limit_s) {
+  SweepOptions o;
+  o.threads = 2;
+  o.isolation.enabled = true;
+  o.isolation.hard_limit_s = hard_limit_s;
+  o.isolation.memory_mb = kSanitized ? 0 : 512;
+  o.isolation.command = {g_self, "--agv-worker"};
+  return o;
+}
+
+std::array<std::int64_t, kOutcomeCount> outcomes(const SweepResults& r, std::size_t planner) {
+  std::array<std::int64_t, kOutcomeCount> n{};
+  for (std::int64_t t = 0; t < r.plan.map_tasks(); ++t) {
+    EXPECT_TRUE(r.run(t, planner).done);
+    ++n[static_cast<int>(r.run(t, planner).outcome)];
+  }
+  return n;
+}
+
+TEST(Isolation, EveryFaultCostsOneRunAndIsRecorded) {
+  std::vector<std::string> names = {"test_hang", "test_segfault", "test_throw"};
+  if (!kSanitized) names.push_back("test_hog");
+  const SweepConfig config = faulty_config(names);
+  const double hard = 1.0;
+  const auto t0 = std::chrono::steady_clock::now();
+  const SweepResults r = run_sweep(config, isolated(hard));
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_TRUE(r.complete);
+  // astar and dijkstra (first and last) are untouched by their neighbours' faults.
+  EXPECT_EQ(outcomes(r, 0)[static_cast<int>(Outcome::success)], 8);
+  EXPECT_EQ(outcomes(r, names.size() + 1)[static_cast<int>(Outcome::success)], 8);
+  const auto hang = outcomes(r, 1);
+  EXPECT_GT(hang[static_cast<int>(Outcome::timeout)], 0);
+  const auto seg = outcomes(r, 2);
+  EXPECT_GT(seg[static_cast<int>(Outcome::crash)], 0);
+  const auto thr = outcomes(r, 3);
+  EXPECT_GT(thr[static_cast<int>(Outcome::crash)], 0);
+  if (!kSanitized) {
+    EXPECT_GT(outcomes(r, 4)[static_cast<int>(Outcome::oom)], 0);
+  }
+  // Every run that timed out was recorded within 1.25x the hard limit (its wall time is its
+  // plan_time_ns).
+  for (std::int64_t t = 0; t < r.plan.map_tasks(); ++t) {
+    const RunSlot& s = r.run(t, 1);
+    if (s.outcome == Outcome::timeout) {
+      EXPECT_LE(static_cast<double>(s.plan_time_ns) / 1e9, 1.25 * hard);
+    }
+  }
+  std::cout << "isolated sweep with " << hang[static_cast<int>(Outcome::timeout)] << " hangs took "
+            << wall << " s\n";
+}
+
+TEST(Isolation, ThrowIsACrashEvenWithoutIsolation) {
+  const SweepConfig config = faulty_config({"test_throw"});
+  SweepOptions o;
+  o.threads = 2;
+  const SweepResults r = run_sweep(config, o);
+  EXPECT_GT(outcomes(r, 1)[static_cast<int>(Outcome::crash)], 0);
+  EXPECT_EQ(outcomes(r, 0)[static_cast<int>(Outcome::success)], 8);
+}
+
+TEST(Isolation, IsolatedReportEqualsInProcessReport) {
+  const SweepConfig config = parse_config(
+      {{"sizes", {20}}, {"densities", {0.1, 0.3}}, {"maps_per_cell", 6}, {"planners", {"astar", "dijkstra"}}});
+  const auto a = deterministic_part(build_report(config, run_sweep(config, isolated(10.0))));
+  SweepOptions o;
+  o.threads = 2;
+  const auto b = deterministic_part(build_report(config, run_sweep(config, o)));
+  EXPECT_EQ(a.dump(), b.dump());
+}
+
+}  // namespace
+}  // namespace agv
+
+int main(int argc, char** argv) {
+  agv::register_faulty_planners();
+  if (argc >= 2 && std::strcmp(argv[1], "--agv-worker") == 0) {
+    long long memory = 0;
+    if (argc >= 4 && std::strcmp(argv[2], "--memory-mb") == 0) memory = std::atoll(argv[3]);
+    return agv::worker_main(memory);
+  }
+  agv::g_self = "/proc/self/exe";
+  char buf[4096];
+  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (n > 0) agv::g_self.assign(buf, static_cast<std::size_t>(n));
+  testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}

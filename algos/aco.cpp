@@ -38,9 +38,9 @@ constexpr double kRenormaliseBelow = 1e-30;
 constexpr std::int64_t kStepDeadlineInterval = 1024;
 
 struct AcoCell {
-  double stored = 0.0;   // pheromone / scale
-  double eta_pow = 0.0;  // eta^beta
-  double weight = 0.0;   // stored^alpha * eta^beta
+  double stored = 0.0;      // pheromone / scale
+  double eta_pow = 0.0;     // eta^beta
+  double weight = 0.0;      // stored^alpha * eta^beta
   std::uint32_t seen = 0;   // == plan stamp: the fields above belong to this plan
   std::uint32_t visit = 0;  // == ant stamp: visited by the current ant
 };
@@ -49,8 +49,8 @@ struct AcoScratch {
   std::vector<AcoCell> cells;  // padded grid
   std::uint32_t plan_stamp = 0;
   std::uint32_t ant_stamp = 0;
-  std::vector<int> walk;             // the current ant's cells
-  std::vector<int> arrived;          // cells of this iteration's successful walks, concatenated
+  std::vector<int> walk;     // the current ant's cells
+  std::vector<int> arrived;  // cells of this iteration's successful walks, concatenated
   std::vector<std::size_t> arrived_end;
   std::vector<double> arrived_length;
   std::vector<int> best;
@@ -70,8 +70,12 @@ struct AcoSettings {
 class Colony {
  public:
   Colony(const PlanRequest& request, const AcoSettings& settings, AcoScratch& s)
-      : grid_(request.grid), request_(request), settings_(settings), s_(s),
-        goal_(request.grid.index(request.goal)), fresh_stored_(settings.initial_pheromone) {
+      : grid_(request.grid),
+        request_(request),
+        settings_(settings),
+        s_(s),
+        goal_(request.grid.index(request.goal)),
+        fresh_stored_(settings.initial_pheromone) {
     const auto size = static_cast<std::size_t>(grid_.padded_size());
     if (s_.cells.size() < size) {
       s_.cells.assign(size, AcoCell{});
@@ -154,7 +158,8 @@ class Colony {
         return WalkEnd::deadline;
       std::uint8_t free_mask = 0;
       for (int d = 0; d < 8; ++d)
-        if (occupancy[at + offset_[d]] == 0) free_mask = static_cast<std::uint8_t>(free_mask | 1U << d);
+        if (occupancy[at + offset_[d]] == 0)
+          free_mask = static_cast<std::uint8_t>(free_mask | 1U << d);
       const std::uint8_t allowed = moves[free_mask];
       int next = -1;
       int next_dir = -1;

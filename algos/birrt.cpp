@@ -48,10 +48,10 @@ class BirrtPlanner final : public Planner {
           break;
         }
         // Goal bias here means: aim at the other tree's root.
-        const Point target = request.rng.chance(settings_.goal_bias)
-                                 ? b->point(0)
-                                 : Point{request.rng.uniform(0.0, width),
-                                         request.rng.uniform(0.0, height)};
+        const Point target =
+            request.rng.chance(settings_.goal_bias)
+                ? b->point(0)
+                : Point{request.rng.uniform(0.0, width), request.rng.uniform(0.0, height)};
         const Extension e = a->extend(grid, target, settings_.step, settings_.sight);
         if (e.status != ExtendStatus::trapped) {
           const Point q = a->point(e.node);

@@ -6,10 +6,9 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <nanoflann.hpp>
 #include <utility>
 #include <vector>
-
-#include <nanoflann.hpp>
 
 #include "algos/sampling_params.h"
 

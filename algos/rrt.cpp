@@ -48,10 +48,10 @@ class RrtPlanner final : public Planner {
         }
         // Uniform over the whole map, obstacles included (the classic RRT sample space): a
         // sample inside an obstacle still pulls the tree towards it.
-        const Point target = request.rng.chance(settings_.goal_bias)
-                                 ? goal
-                                 : Point{request.rng.uniform(0.0, width),
-                                         request.rng.uniform(0.0, height)};
+        const Point target =
+            request.rng.chance(settings_.goal_bias)
+                ? goal
+                : Point{request.rng.uniform(0.0, width), request.rng.uniform(0.0, height)};
         const Extension e = tree.extend(grid, target, settings_.step, settings_.sight);
         if (e.status == ExtendStatus::trapped) continue;
         const Point p = tree.point(e.node);

@@ -43,8 +43,9 @@ struct RrtTree::KdIndex {
       return false;
     }
   };
-  using Tree = nanoflann::KDTreeSingleIndexDynamicAdaptor<
-      nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 2, std::uint32_t>;
+  using Tree =
+      nanoflann::KDTreeSingleIndexDynamicAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud,
+                                                 2, std::uint32_t>;
 
   // The adaptor keeps log2(maximum point count) + 1 static trees and indexes past the last one
   // when more points arrive, so the maximum is its default (1e9), far above any tree here; empty
@@ -71,8 +72,8 @@ void RrtTree::reset(const Grid& grid, Point root, NearestIndex index, double buc
     // Adaptive: start with about kInitialBuckets buckets over the whole map.
     const double side =
         fixed_side_ ? bucket_side
-                    : std::max(kMinBucketSide, std::sqrt(static_cast<double>(width_) * height_ /
-                                                         kInitialBuckets));
+                    : std::max(kMinBucketSide,
+                               std::sqrt(static_cast<double>(width_) * height_ / kInitialBuckets));
     points_.push_back(root);
     parents_.push_back(-1);
     rebucket(side);

@@ -22,8 +22,8 @@ SightRule segment_sight_of(const Params& params);
 std::vector<ParamSpec> rrt_params();
 
 struct RrtSettings {
-  double step = 0.0;         // cells
-  double goal_bias = 0.0;    // probability of sampling the goal (the other tree's root)
+  double step = 0.0;       // cells
+  double goal_bias = 0.0;  // probability of sampling the goal (the other tree's root)
   long long max_iterations = 0;
   NearestIndex index = NearestIndex::buckets;
   SightRule sight;

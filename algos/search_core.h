@@ -141,10 +141,9 @@ struct FastDivider {
 // Runs one search from start to goal (both in bounds and free). The parent chain of the goal is
 // left in `buffers` for trace_cells().
 template <class Policy, class Listener = NullListener>
-GridSearchOutcome grid_search(const Grid& grid, Cell start, Cell goal,
-                              const GridSearchSetup& setup, const Deadline& deadline,
-                              const Policy& policy, GridSearchBuffers& buffers,
-                              Listener&& listener = Listener{}) {
+GridSearchOutcome grid_search(const Grid& grid, Cell start, Cell goal, const GridSearchSetup& setup,
+                              const Deadline& deadline, const Policy& policy,
+                              GridSearchBuffers& buffers, Listener&& listener = Listener{}) {
   using open_key::index_of;
   using open_key::pack;
   const int stride = grid.stride();

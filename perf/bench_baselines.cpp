@@ -68,8 +68,7 @@ void run_case(benchmark::State& state, const Case& c, const Planner& planner) {
   state.counters["expanded_per_s"] = Counter(static_cast<double>(expanded), Counter::kIsRate);
   state.counters["expanded_per_plan"] =
       Counter(static_cast<double>(expanded) / static_cast<double>(plans));
-  state.counters["success"] =
-      Counter(static_cast<double>(successes) / static_cast<double>(plans));
+  state.counters["success"] = Counter(static_cast<double>(successes) / static_cast<double>(plans));
 }
 
 // The RRT tree's nearest-neighbour index alone: grow a tree of state.range(0) nodes on a 64x64
@@ -102,7 +101,8 @@ int main(int argc, char** argv) {
   using namespace agv;
   benchmark::Initialize(&argc, argv);
   static std::vector<std::unique_ptr<Case>> cases;
-  for (double density : {0.1, 0.3}) cases.push_back(std::make_unique<Case>(uniform_case(64, density)));
+  for (double density : {0.1, 0.3})
+    cases.push_back(std::make_unique<Case>(uniform_case(64, density)));
 
   struct Variant {
     std::string label;
@@ -124,9 +124,9 @@ int main(int argc, char** argv) {
       planners.push_back(configure_planner(v.planner, v.params, "bench"));
       const Planner* p = planners.back().planner.get();
       const Case* cp = c.get();
-      benchmark::RegisterBenchmark((v.label + "/" + c->name).c_str(),
-                                   [cp, p](benchmark::State& s) { run_case(s, *cp, *p); })
-          ->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark((v.label + "/" + c->name).c_str(), [cp, p](benchmark::State& s) {
+        run_case(s, *cp, *p);
+      })->Unit(benchmark::kMillisecond);
     }
   }
   for (const double side : {0.0, 1.0, 2.0, 4.0, 8.0}) {
@@ -135,13 +135,19 @@ int main(int argc, char** argv) {
       std::snprintf(name, sizeof name, "nearest/buckets_side%.0f", side);
     else
       std::snprintf(name, sizeof name, "nearest/buckets_adaptive");
-    benchmark::RegisterBenchmark(name, [side](benchmark::State& s) {
-      nearest_index(s, NearestIndex::buckets, side);
-    })->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(
+        name, [side](benchmark::State& s) { nearest_index(s, NearestIndex::buckets, side); })
+        ->Arg(100)
+        ->Arg(1000)
+        ->Arg(10000)
+        ->Unit(benchmark::kMicrosecond);
   }
-  benchmark::RegisterBenchmark("nearest/kdtree", [](benchmark::State& s) {
-    nearest_index(s, NearestIndex::kdtree, 0.0);
-  })->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark(
+      "nearest/kdtree", [](benchmark::State& s) { nearest_index(s, NearestIndex::kdtree, 0.0); })
+      ->Arg(100)
+      ->Arg(1000)
+      ->Arg(10000)
+      ->Unit(benchmark::kMicrosecond);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -237,8 +237,8 @@ TEST(Prm, EmptyMapApproachesTheStraightLine) {
   for (const int samples : {50, 200, 800, 3200, 12800}) {
     const double mean = mean_prm_length(map, samples, 10, scratch);
     ASSERT_FALSE(std::isnan(mean)) << samples;
-    std::printf("[ baseline ] prm empty 32x32, %4d samples: mean length / straight %.4f\n",
-                samples, mean / straight);
+    std::printf("[ baseline ] prm empty 32x32, %4d samples: mean length / straight %.4f\n", samples,
+                mean / straight);
     EXPECT_LT(mean, previous + 1e-9) << samples;
     previous = mean;
   }
@@ -267,8 +267,10 @@ TEST(Prm, ObstacleMapsApproachTheAnyAngleOptimumFromAbove) {
   ASSERT_GE(maps, 6);
   ratio_sparse /= maps;
   ratio_dense /= maps;
-  std::printf("[ baseline ] prm density 0.2, %d maps: mean length / 8-connected optimum %.4f "
-              "(500 samples), %.4f (5000 samples)\n", maps, ratio_sparse, ratio_dense);
+  std::printf(
+      "[ baseline ] prm density 0.2, %d maps: mean length / 8-connected optimum %.4f "
+      "(500 samples), %.4f (5000 samples)\n",
+      maps, ratio_sparse, ratio_dense);
   EXPECT_LT(ratio_dense, ratio_sparse);
   EXPECT_LT(ratio_dense, 1.0);
 }
@@ -299,7 +301,8 @@ TEST(Aco, NeverRevisitsAndMovesLegallyUnderEachRule) {
   Scratch scratch;
   for (const CornerRule rule :
        {CornerRule::allow, CornerRule::no_squeeze, CornerRule::no_corner_cut}) {
-    const auto aco = make("aco", {{"corner_rule", std::string(to_string(rule))}, {"iterations", 30}});
+    const auto aco =
+        make("aco", {{"corner_rule", std::string(to_string(rule))}, {"iterations", 30}});
     int successes = 0;
     for (int i = 0; i < 60; ++i) {
       const MapInstance map = random_map(0.3, 8000 + i);

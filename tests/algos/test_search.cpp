@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "algos/astar.h"
@@ -103,45 +104,55 @@ TEST(GridSearchParams, DefaultsAndValidation) {
 
 // --- (1) MovingAI optimal lengths ------------------------------------------------------------
 
-class MovingAiScenarios : public ::testing::TestWithParam<std::string> {};
+// One case per (map, solver), so ctest can spread the ~3 CPU-minutes over its jobs. Every
+// scenario of every file is checked: no subsampling.
+const char* const kMovingAiMaps[] = {"arena2.map", "random512-10-0.map", "maze512-1-0.map",
+                                     "8room_000.map", "Berlin_0_512.map"};
+const char* const kSolvers[] = {"astar", "dijkstra", "shortest_length"};
 
-TEST_P(MovingAiScenarios, AStarAndDijkstraAreOptimal) {
+class MovingAiScenarios : public ::testing::TestWithParam<std::tuple<const char*, const char*>> {};
+
+TEST_P(MovingAiScenarios, OptimalOnEveryScenario) {
+  const std::string map = std::get<0>(GetParam());
+  const std::string solver = std::get<1>(GetParam());
   const std::string dir = std::string(AGV_SHARED_MAPS) + "/";
-  const Grid grid = read_map(dir + GetParam());
-  const auto queries = read_scen(dir + GetParam() + ".scen");
+  const Grid grid = read_map(dir + map);
+  const auto queries = read_scen(dir + map + ".scen");
   ASSERT_FALSE(queries.empty());
-  const auto astar = make("astar", {{"corner_rule", "no_corner_cut"}});
-  const auto dijkstra = make("dijkstra", {{"corner_rule", "no_corner_cut"}});
+  std::optional<ConfiguredPlanner> planner;
+  if (solver != "shortest_length") planner = make(solver, {{"corner_rule", "no_corner_cut"}});
   Scratch scratch;
   int failures = 0;
   for (std::size_t q = 0; q < queries.size() && failures < 5; ++q) {
     const auto& s = queries[q];
-    for (const auto* p : {&astar, &dijkstra}) {
-      const PlanResult r = run(*p, grid, s.start, s.goal, scratch);
-      const bool ok =
-          r.success && near(path_length(r.path), s.optimal_length, 1e-6) &&
-          path_problem(grid, r.path, s.start, s.goal, CornerRule::no_corner_cut).empty();
-      if (!ok) {
+    if (!planner) {
+      const auto ref = shortest_length(grid, s.start, s.goal, CornerRule::no_corner_cut, scratch);
+      if (!ref || !near(*ref, s.optimal_length, 1e-6)) {
         ++failures;
-        ADD_FAILURE() << p->info->name << " query " << q << ": success " << r.success << " length "
-                      << path_length(r.path) << " optimal " << s.optimal_length << " "
-                      << path_problem(grid, r.path, s.start, s.goal, CornerRule::no_corner_cut);
+        ADD_FAILURE() << "query " << q << " (line " << s.line << "): " << (ref ? *ref : -1.0)
+                      << " optimal " << s.optimal_length;
       }
+      continue;
     }
-    const auto ref = shortest_length(grid, s.start, s.goal, CornerRule::no_corner_cut, scratch);
-    if (!ref || !near(*ref, s.optimal_length, 1e-6)) {
+    const PlanResult r = run(*planner, grid, s.start, s.goal, scratch);
+    const std::string problem =
+        r.success ? path_problem(grid, r.path, s.start, s.goal, CornerRule::no_corner_cut)
+                  : std::string("failed: ") + to_string(r.failure);
+    if (!problem.empty() || !near(path_length(r.path), s.optimal_length, 1e-6)) {
       ++failures;
-      ADD_FAILURE() << "shortest_length query " << q << ": " << (ref ? *ref : -1.0);
+      ADD_FAILURE() << "query " << q << " (line " << s.line << "): length " << path_length(r.path)
+                    << " optimal " << s.optimal_length << " " << problem;
     }
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Maps, MovingAiScenarios,
-                         ::testing::Values("arena2.map", "random512-10-0.map", "maze512-1-0.map",
-                                           "8room_000.map", "Berlin_0_512.map"),
+                         ::testing::Combine(::testing::ValuesIn(kMovingAiMaps),
+                                            ::testing::ValuesIn(kSolvers)),
                          [](const auto& param_info) {
-                           const std::string& file = param_info.param;
-                           std::string name = file.substr(0, file.find('.'));
+                           const std::string file = std::get<0>(param_info.param);
+                           std::string name =
+                               file.substr(0, file.find('.')) + "_" + std::get<1>(param_info.param);
                            for (char& c : name)
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return name;
@@ -307,6 +318,31 @@ TEST(ScratchReuse, RepeatsAndSizeChanges) {
     }
     ASSERT_EQ(a.phases.size(), 1U);
     EXPECT_EQ(a.phases[0].name, "search");
+  }
+}
+
+// The one-byte search stamps wrap every 126 searches: ~300 searches on one Scratch, alternating
+// two grids, must each match a search on a fresh Scratch.
+TEST(ScratchReuse, StampWrapAround) {
+  Rng rng(11, 3);
+  Grid a(40, 30);
+  Grid b(25, 45);
+  for (Grid* g : {&a, &b})
+    for (int y = 0; y < g->height(); ++y)
+      for (int x = 0; x < g->width(); ++x) g->set_blocked(x, y, rng.chance(0.3));
+  const auto astar = make("astar", {{"corner_rule", "no_squeeze"}});
+  Scratch shared;
+  for (int k = 0; k < 600; ++k) {
+    Grid& g = k % 2 == 0 ? a : b;
+    const Cell start{rng.between(0, g.width() - 1), rng.between(0, g.height() - 1)};
+    const Cell goal{rng.between(0, g.width() - 1), rng.between(0, g.height() - 1)};
+    if (g.blocked(start) || g.blocked(goal)) continue;
+    Scratch fresh;
+    const PlanResult x = run(astar, g, start, goal, shared);
+    const PlanResult y = run(astar, g, start, goal, fresh);
+    ASSERT_EQ(x.failure, y.failure) << k;
+    ASSERT_EQ(x.path, y.path) << k;
+    ASSERT_EQ(x.expanded_nodes, y.expanded_nodes) << k;
   }
 }
 

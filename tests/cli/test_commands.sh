@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# The happy paths of every subcommand, as a user types them. Usage: test_commands.sh AGVBENCH SOURCE_DIR MAPS_DIR
+set -u
+bin=$1
+src=$2
+maps=$3
+py=/usr/bin/python3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+pass=0
+fail=0
+check() {  # NAME COMMAND...
+  local name=$1
+  shift
+  if "$@" >out.txt 2>err.txt; then
+    echo "ok   $name"
+    pass=$((pass + 1))
+  else
+    echo "FAIL $name (exit $?)"
+    cat out.txt err.txt | tail -20
+    fail=$((fail + 1))
+  fi
+}
+
+check "list --json parses and names astar" sh -c "'$bin' list --json | $py -c 'import json,sys; r=json.load(sys.stdin); assert any(p[\"name\"]==\"astar\" for p in r); assert all(\"params\" in p for p in r)'"
+check "list prints parameters" sh -c "'$bin' list | grep -q 'corner_rule'"
+check "validate the quick config" "$bin" validate "$src/configs/quick.json"
+check "plan on a generated grid draws S, G and a path" sh -c "'$bin' plan --planner astar --planner dijkstra --size 24 --density 0.2 --seed 3 | grep -q 'S' && '$bin' plan --size 24 --density 0.2 | grep -q 'astar: success'"
+check "plan --json-out writes a path document" sh -c "'$bin' plan --size 16 --density 0.1 --json-out p.json --no-ascii >/dev/null && $py -c 'import json; d=json.load(open(\"p.json\")); assert d[\"runs\"][0][\"outcome\"]==\"success\" and len(d[\"runs\"][0][\"path\"])>1'"
+check "plan on a MovingAI map" sh -c "'$bin' plan --map '$maps/arena2.map' --start 99,159 --goal 101,162 --param corner_rule=no_corner_cut --no-ascii | grep -q 'path_length = 3.828'"
+check "scen: arena2 optimal under astar" sh -c "'$bin' scen '$maps/arena2.map' '$maps/arena2.map.scen' | grep -q ' 0 mismatches'"
+check "scen --json: dijkstra on arena2" sh -c "'$bin' scen '$maps/arena2.map' '$maps/arena2.map.scen' --planner dijkstra --json | $py -c 'import json,sys; r=json.load(sys.stdin); assert r[\"mismatches\"]==0 and r[\"queries\"]==910 and \"median_query_us\" in r[\"timing\"]'"
+check "run writes a report and a journal" sh -c "'$bin' run '$src/configs/quick.json' --out r.json --runs-out r.jsonl --quiet && $py -c 'import json; r=json.load(open(\"r.json\")); assert r[\"schema_version\"]==1 and r[\"complete\"]' && test -s r.jsonl"
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]

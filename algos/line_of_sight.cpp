@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "algos/line_of_sight_internal.h"
+
 namespace agv {
 
 SightRule SightRule::cells(CornerRule rule) { return {Kind::cells, rule, 0.0}; }
@@ -14,12 +16,8 @@ SightRule SightRule::circles(double r_obs, CornerRule rule) {
 
 namespace {
 
-double snap(double v) {
-  const double r = std::nearbyint(v);
-  return std::abs(v - r) <= kSightEpsilon ? r : v;
-}
-
-bool is_integer(double v) { return v == std::floor(v); }
+using sight_internal::is_integer;
+using sight_internal::squared_distance;
 
 // floor / ceil clamped to [lo, hi] before the cast, so no out-of-range conversion.
 int floor_clamped(double v, int lo, int hi) {
@@ -47,18 +45,6 @@ class Frame {
   const Grid& grid_;
 };
 
-// Squared distance from p to the segment a-b (a == b allowed).
-double squared_distance(double pu, double pv, double ua, double va, double ub, double vb) {
-  const double du = ub - ua;
-  const double dv = vb - va;
-  const double len2 = du * du + dv * dv;
-  double t = len2 > 0.0 ? ((pu - ua) * du + (pv - va) * dv) / len2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  const double eu = pu - (ua + t * du);
-  const double ev = pv - (va + t * dv);
-  return eu * eu + ev * ev;
-}
-
 // Every obstacle centre (i + 0.5, j + 0.5) within `radius` of the segment has its closest point
 // p with |p.u - centre.u| <= radius, so only columns within radius of [ua, ub] and, in each,
 // rows within radius of the segment's v-range over [centre.u - radius, centre.u + radius] can
@@ -70,7 +56,7 @@ SightHit clearance_scan(const Frame<kTransposed>& f, double ua, double va, doubl
   // A segment that enters no obstacle interior is >= 0.5 from every obstacle centre (a line
   // missing an open unit square is at least the inscribed radius from its centre).
   if (!(radius > 0.5)) return {};
-  const double limit = radius * radius - kSightEpsilon;
+  const double limit = sight_internal::clearance_limit(radius);
   const int i_lo = ceil_clamped(ua - radius - 0.5, -1, f.u_size());
   const int i_hi = floor_clamped(ub + radius - 0.5, -1, f.u_size());
   for (int i = i_lo; i <= i_hi; ++i) {
@@ -118,7 +104,7 @@ SightHit walk(const Grid& grid, double ua, double va, double ub, double vb, cons
       if (ur < ub) {
         // Direct evaluation (not incremental), then snapped: exact for the usual binary
         // fractions, so a pass through a vertex is seen as one.
-        vr = snap(va + (ur - ua) * slope);
+        vr = sight_internal::line_crossing(ua, va, slope, ur);
         right_vertex = slope != 0.0 && ur > ua && is_integer(vr);
       }
       // Rows whose closed square meets the segment's v-range in this column.
@@ -161,17 +147,15 @@ SightHit walk(const Grid& grid, double ua, double va, double ub, double vb, cons
 
 }  // namespace
 
+SightHit sight_internal::reference_walk(const Grid& grid, const Walk& w, const SightRule& rule) {
+  if (w.transposed) return walk<true>(grid, w.ua, w.va, w.ub, w.vb, rule);
+  return walk<false>(grid, w.ua, w.va, w.ub, w.vb, rule);
+}
+
 SightHit check_segment(const Grid& grid, Point a, Point b, const SightRule& rule) {
-  a = {snap(a.x), snap(a.y)};
-  b = {snap(b.x), snap(b.y)};
-  const double w = grid.width();
-  const double h = grid.height();
-  // Written so that NaN fails too.
-  const auto inside = [w, h](Point p) { return p.x >= 0.0 && p.x <= w && p.y >= 0.0 && p.y <= h; };
-  if (!inside(a) || !inside(b)) return {SightHit::Kind::outside, {}};
-  if (std::abs(b.y - a.y) <= std::abs(b.x - a.x))
-    return walk<false>(grid, a.x, a.y, b.x, b.y, rule);
-  return walk<true>(grid, a.y, a.x, b.y, b.x, rule);
+  sight_internal::Walk w;
+  if (!sight_internal::canonical_walk(grid, a, b, w)) return {SightHit::Kind::outside, {}};
+  return sight_internal::reference_walk(grid, w, rule);
 }
 
 bool polyline_free(const Grid& grid, std::span<const Point> points, const SightRule& rule) {

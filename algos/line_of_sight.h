@@ -1,7 +1,7 @@
 #pragma once
 // The one line-of-sight test of the project (PLANNERS.md "Line of sight and clearance"): every
 // shortcut pass, every sampling/swarm planner and the validator ask "is segment a-b free?" here.
-// A batched SIMD version must agree with this scalar one.
+// The word-parallel and batched forms (algos/line_of_sight_batch.h) agree with this scalar walk.
 //
 // Geometry: points are continuous cell coordinates; cell (x, y) is the closed square
 // [x, x+1] x [y, y+1]; cells outside [0, width) x [0, height) are obstacles (the border wall).
@@ -66,10 +66,18 @@ struct SightHit {
   explicit operator bool() const { return kind != Kind::none; }
 };
 
-// Full diagnosis (the validator's reasons); same verdict as segment_free.
+// Full diagnosis (the validator's reasons): the reference walk, cell by cell along the major
+// axis; same verdict as segment_free.
 SightHit check_segment(const Grid& grid, Point a, Point b, const SightRule& rule);
 
-inline bool segment_free(const Grid& grid, Point a, Point b, const SightRule& rule = {}) {
+// The verdict alone (algos/line_of_sight_batch.cpp): the reference walk for short segments, a
+// vectorised walk for long ones; the same answer as segment_free_reference, bit for bit. Many
+// segments at once: segments_free() and friends in algos/line_of_sight_batch.h.
+bool segment_free(const Grid& grid, Point a, Point b, const SightRule& rule = {});
+
+// The reference verdict (the walk of check_segment), kept for tests and benchmarks.
+inline bool segment_free_reference(const Grid& grid, Point a, Point b,
+                                   const SightRule& rule = {}) {
   return !check_segment(grid, a, b, rule);
 }
 

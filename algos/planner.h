@@ -41,6 +41,29 @@ struct PhaseTime {
   std::int64_t ns = 0;
 };
 
+// What a planner that drives a simulated robot through a world with moving obstacles executed
+// (the DWA fusion planners, algos/fusion.h), for the engine to judge: collisions, reaching the
+// goal and the fusion metrics are decided from this record by engine/trajectory_judge.h, never
+// taken from the planner. Positions in continuous cell coordinates, times in seconds.
+struct DynamicTrack {
+  double radius = 0.0;        // cells
+  std::vector<Point> centre;  // at each Trajectory::t
+};
+struct Trajectory {
+  std::vector<double> t;         // t[0] = 0, one entry per control step boundary
+  std::vector<Point> position;   // robot centre at t[i]
+  std::vector<double> heading;   // rad, at t[i]
+  std::vector<double> v, w;      // command held over [t[i], t[i+1]): m/s, rad/s (size - 1)
+  double robot_radius = 0.0;     // cells
+  double goal_tolerance = 0.0;   // cells: reached when the centre is this close to the goal's
+  double cell_edge = 1.0;        // metres per cell
+  std::vector<DynamicTrack> obstacles;
+  std::vector<Cell> unknown_cells;  // static obstacles the global planner did not see
+  std::vector<Point> global_path;   // the global plan the run started from (for pictures)
+  std::vector<Point> key_points;    // its key points, the DWA's successive local goals
+  std::string end_reason;  // the planner's account: reached, timeout, stuck or contact
+};
+
 struct PlanResult {
   bool success = false;
   Failure failure = Failure::none;
@@ -51,10 +74,16 @@ struct PlanResult {
   CornerRule rule = CornerRule::allow;
   // Nodes taken off the open list, or samples / iterations / ant steps: documented per planner.
   std::int64_t expanded_nodes = 0;
+  // Waypoints before curve sampling (METRICS.md path_nodes), for planners whose path is a
+  // sampled curve; -1 when the path's own points are the waypoints.
+  std::int64_t waypoints_before_sampling = -1;
   // Planner-specific scalar metrics (aggregated like the engine's, under these names).
   std::vector<std::pair<std::string, double>> extra;
   // CPU time per phase; the engine reports these under `timing`.
   std::vector<PhaseTime> phases;
+  // Set only by planners that simulate a robot (fusion planners): the engine then judges this
+  // trajectory instead of validating `path` against the grid (engine/run_executor.cpp).
+  std::shared_ptr<const Trajectory> trajectory;
 
   static PlanResult failed(Failure why, std::string message) {
     PlanResult r;

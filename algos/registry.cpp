@@ -5,7 +5,14 @@
 #include "algos/astar.h"
 #include "algos/dijkstra.h"
 #include "algos/aco.h"
+#include "algos/alt_astar.h"
+#include "algos/bidir_astar.h"
+#include "algos/improved_astar.h"
+#include "algos/kin_astar.h"
+#include "algos/ma_star.h"
+#include "algos/hma_star.h"
 #include "algos/birrt.h"
+#include "algos/fusion.h"
 #include "algos/prm.h"
 #include "algos/rrt.h"
 
@@ -19,6 +26,17 @@ const std::vector<PlannerInfo>& planner_registry() {
       rrt_planner(),
       birrt_planner(),
       aco_planner(),
+      bidir_astar_planner(),
+      ma_star_planner(),
+      hma_star_planner(),
+      improved_astar_internal_planner(),
+      improved_astar_planner(),
+      alt_astar_planner(),
+      kin_astar_planner(),
+      dwa_planner(),
+      fusion_astar_dwa_planner(),
+      fusion_alt_dwa_planner(),
+      fusion_kin_dwa_planner(),
   };
   return registry;
 }

@@ -77,6 +77,33 @@ nlohmann::json grid_rows(const Grid& grid) {
   return rows;
 }
 
+nlohmann::json points_json(const std::vector<Point>& points) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : points) out.push_back({p.x, p.y});
+  return out;
+}
+
+// A simulated robot run (fusion planners): the executed trajectory, the moving obstacles'
+// tracks and the unknown cells, under the keys reports/plot_paths.py draws.
+void add_trajectory(nlohmann::json& run, const Trajectory& tr) {
+  run["trajectory"] = points_json(tr.position);
+  run["trajectory_t"] = tr.t;
+  run["trajectory_heading"] = tr.heading;
+  run["trajectory_v"] = tr.v;
+  run["trajectory_w"] = tr.w;
+  run["robot_radius"] = tr.robot_radius;
+  run["end_reason"] = tr.end_reason;
+  nlohmann::json obstacles = nlohmann::json::array();
+  for (const auto& ob : tr.obstacles)
+    obstacles.push_back({{"track", points_json(ob.centre)}, {"radius", ob.radius}});
+  run["obstacles"] = obstacles;
+  nlohmann::json unknown = nlohmann::json::array();
+  for (const auto& c : tr.unknown_cells) unknown.push_back({c.x, c.y});
+  run["unknown_cells"] = unknown;
+  run["global_path"] = points_json(tr.global_path);
+  run["key_points"] = points_json(tr.key_points);
+}
+
 }  // namespace
 
 int command_plan(const PlanCommand& cmd) {
@@ -168,6 +195,7 @@ int command_plan(const PlanCommand& cmd) {
                     {"metrics", metrics},
                     {"path", path},
                     {"timing", {{"plan_time_ns", o.plan_time_ns}, {"phases", phases}}}});
+    if (o.result.trajectory) add_trajectory(runs.back(), *o.result.trajectory);
   }
   const nlohmann::json doc = {{"map", map_doc}, {"runs", runs}};
   if (!cmd.json_out.empty()) write_json_atomic(doc, cmd.json_out);

@@ -23,9 +23,10 @@ double wrapped_turn(double from, double to) {
 }  // namespace
 
 PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
-                                 const MotionTimeParams& motion, std::int64_t plan_time_ns) {
+                                 const MotionTimeParams& motion, std::int64_t plan_time_ns,
+                                 std::int64_t waypoints) {
   PathMetrics m;
-  m.path_nodes = static_cast<std::int64_t>(path.size());
+  m.path_nodes = waypoints >= 0 ? waypoints : static_cast<std::int64_t>(path.size());
   if (path.empty()) return m;
 
   CompensatedSum length;

@@ -48,9 +48,11 @@ struct PathMetrics {
 inline constexpr double kTurnThreshold = 1e-9;  // rad, METRICS.md "turns"
 
 // Precondition: the path passed validate_path (non-empty, finite, inside the grid).
+// `waypoints` >= 0 overrides path_nodes (and its motion-time term) for a path that is a sampled
+// curve: METRICS.md counts waypoints before sampling.
 PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
                                  const MotionTimeParams& motion = {},
-                                 std::int64_t plan_time_ns = 0);
+                                 std::int64_t plan_time_ns = 0, std::int64_t waypoints = -1);
 
 // (name, value) in a fixed order, for the aggregator and the per-run records.
 // Sum of segment lengths in cells, compensated: the same length compute_path_metrics reports.

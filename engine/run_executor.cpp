@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "algos/dijkstra.h"
+#include "engine/trajectory_judge.h"
 #include "engine/validator.h"
 
 namespace agv {
@@ -14,7 +15,8 @@ namespace agv {
 namespace {
 constexpr std::array<std::string_view, kOutcomeCount> kOutcomeNames = {
     "success", "no_path", "missed_path", "limit", "invalid_path", "invalid_input", "crash",
-    "timeout", "oom"};
+    "timeout", "oom", "collision_static", "collision_unknown", "collision_dynamic",
+    "sim_timeout", "stuck"};
 }
 
 std::string_view to_string(Outcome outcome) { return kOutcomeNames[static_cast<int>(outcome)]; }
@@ -62,6 +64,21 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
   const PlanResult& r = out.result;
   out.metrics[kExpandedNodesMetric] = static_cast<double>(r.expanded_nodes);
 
+  // A simulated robot run (fusion planners) is judged from its executed trajectory by
+  // engine/trajectory_judge.h, never by the grid validator and its corner rule.
+  bool judged = false;
+  if (r.trajectory) {
+    TrajectoryVerdict verdict =
+        judge_trajectory(map.grid(), map.start(), map.goal(), *r.trajectory);
+    for (auto& m : verdict.metrics) out.result.extra.push_back(std::move(m));
+    if (verdict.outcome != Outcome::success) {
+      out.outcome = verdict.outcome;
+      out.message = std::move(verdict.message);
+      return out;
+    }
+    judged = true;
+  }
+
   if (!r.success) {
     out.message = r.message;
     switch (r.failure) {
@@ -83,14 +100,17 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
     return out;
   }
 
-  const ValidationResult v = validate_path(map.grid(), map.start(), map.goal(), r.path, r.rule);
-  if (!v.ok) {
-    out.outcome = Outcome::invalid_path;
-    out.message = v.reason;
-    return out;
+  if (!judged) {
+    const ValidationResult v = validate_path(map.grid(), map.start(), map.goal(), r.path, r.rule);
+    if (!v.ok) {
+      out.outcome = Outcome::invalid_path;
+      out.message = v.reason;
+      return out;
+    }
   }
   out.outcome = Outcome::success;
-  const PathMetrics m = compute_path_metrics(map.grid(), r.path, motion);
+  const PathMetrics m =
+      compute_path_metrics(map.grid(), r.path, motion, 0, r.waypoints_before_sampling);
   const auto values = metric_values(m);
   for (std::size_t i = 0; i < values.size(); ++i) {
     // The names are one list; a mismatch is a bug caught here, not a mislabelled report.

@@ -25,8 +25,15 @@ enum class Outcome {
   crash,          // planner threw, or (isolated) its process died of a signal
   timeout,        // isolated: killed at the hard wall-clock limit
   oom,            // isolated: ran out of its address-space cap
+  // Simulated robot runs (fusion planners), judged from the executed trajectory by
+  // engine/trajectory_judge.h; reaching the goal is `success`.
+  collision_static,   // the robot disc hit a grid obstacle
+  collision_unknown,  // ... an unknown static cell (one the global planner did not see)
+  collision_dynamic,  // ... a moving obstacle
+  sim_timeout,        // simulated time limit reached before the goal
+  stuck,              // no admissible moving velocity for the planner's stuck_steps
 };
-inline constexpr int kOutcomeCount = 9;
+inline constexpr int kOutcomeCount = 14;
 std::string_view to_string(Outcome outcome);
 std::optional<Outcome> outcome_from_string(std::string_view name);
 

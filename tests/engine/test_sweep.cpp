@@ -1,5 +1,6 @@
 // The sweep end to end: determinism across thread counts, streamed records, config checking.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -47,7 +48,8 @@ TEST(Sweep, ReportIsIdenticalOnOneAndTwoThreads) {
 
 TEST(Sweep, RecordsOnePerRunWithReplayFields) {
   const SweepConfig config = reduced_default();
-  const fs::path runs = fs::temp_directory_path() / "agv_test_runs.jsonl";
+  const fs::path runs =
+      fs::temp_directory_path() / ("agv_test_runs_" + std::to_string(::getpid()) + ".jsonl");
   deterministic_text(config, 2, runs.string());
   std::ifstream in(runs);
   std::string line;
@@ -78,7 +80,8 @@ TEST(Sweep, DifferentSeedsGiveDifferentMaps) {
 }
 
 TEST(Sweep, AtomicWriteLeavesNoTemporaryFile) {
-  const fs::path dir = fs::temp_directory_path() / "agv_atomic_test";
+  const fs::path dir =
+      fs::temp_directory_path() / ("agv_atomic_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const std::string path = (dir / "sub" / "r.json").string();
   write_json_atomic(json{{"a", 1}}, path);

@@ -1,0 +1,10 @@
+#pragma once
+// Alternative A* of paper 003 section 2 (PLANNERS.md "Alternative A*").
+
+#include "algos/registry.h"
+
+namespace agv {
+
+PlannerInfo alt_astar_planner();
+
+}  // namespace agv

@@ -1,0 +1,10 @@
+#pragma once
+// Bidirectional A* (paper 002's baseline; PLANNERS.md "Dijkstra, bidirectional A*").
+
+#include "algos/registry.h"
+
+namespace agv {
+
+PlannerInfo bidir_astar_planner();
+
+}  // namespace agv

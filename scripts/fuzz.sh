@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (tests/fuzz: .map reader, .scen reader, config loader) with
+# clang, ASan and UBSan in build-fuzz/, then fuzzes each for SECONDS (default 30), starting from
+# the seed corpus in tests/fuzz/corpus/ (never modified: new inputs go to build-fuzz/corpus/).
+# Prints each harness's executions; exits non-zero on any finding (crash, sanitizer report,
+# leak, uncaught exception, input slower than 5 s, memory over the limit), whose reproducer is
+# left in build-fuzz/findings/. The project's library packages come from scripts/setup.sh.
+#
+# Usage: scripts/fuzz.sh [SECONDS]      e.g. scripts/fuzz.sh 3600 for a long run
+# Env:   FUZZ_TARGETS="fuzz_map fuzz_scen fuzz_config" (a subset), FUZZ_RSS_MB=2048
+# Replay one input: build-fuzz/tests/fuzz/fuzz_map FILE
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-30}
+targets=(${FUZZ_TARGETS:-fuzz_map fuzz_scen fuzz_config})
+rss_mb=${FUZZ_RSS_MB:-2048}
+
+scripts/apt_need.sh clang libclang-rt-14-dev cmake ninja-build
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DAGVBENCH_FUZZ=ON -DAGVBENCH_BUILD_PERF=OFF >/dev/null
+cmake --build build-fuzz -j "$jobs" --target "${targets[@]}"
+
+mkdir -p build-fuzz/findings
+status=0
+summary=()
+for t in "${targets[@]}"; do
+  kind=${t#fuzz_}
+  work=build-fuzz/corpus/$kind
+  mkdir -p "$work"
+  log=build-fuzz/$t.log
+  echo "fuzz: $t for ${seconds}s"
+  rc=0
+  build-fuzz/tests/fuzz/"$t" "$work" "tests/fuzz/corpus/$kind" \
+    -max_total_time="$seconds" -timeout=5 -rss_limit_mb="$rss_mb" -print_final_stats=1 \
+    -artifact_prefix="build-fuzz/findings/$t-" >"$log" 2>&1 || rc=$?
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  cov=$(grep -E '^#[0-9]+[[:space:]]+DONE' "$log" | tail -1 | grep -oE 'cov: [0-9]+ ft: [0-9]+' || true)
+  if ((rc != 0)); then
+    status=1
+    echo "fuzz: $t FAILED (exit $rc); log $log; reproducer:" >&2
+    ls -1 build-fuzz/findings/"$t"-* >&2 2>/dev/null || true
+    grep -E 'ERROR|SUMMARY|==[0-9]+==|runtime error|fuzz_[a-z]+:' "$log" | head -20 >&2 || true
+  fi
+  summary+=("$t: ${execs:-?} executions in ${seconds}s, ${cov:-cov: ?}, corpus $(ls "$work" | wc -l) inputs, exit $rc")
+done
+printf 'fuzz: %s\n' "${summary[@]}"
+exit $status

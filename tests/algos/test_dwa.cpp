@@ -1,0 +1,392 @@
+// The DWA local planner and the fusion planners against truth (STYLE.md item 11): the unicycle
+// integration is the closed-form arc, the dynamic window stays inside V_m n V_d, every chosen
+// velocity can stop before its rollout's first obstacle (V_a, checked against the exact
+// distance transform), fusion reaches the goal without collision on random solvable maps, a
+// head-on moving obstacle is avoided, runs are reproducible, and the engine's judge catches
+// collisions injected into hand-made trajectories.
+//
+// Reached rates measured when these tests were written (100 maps per density 0.1 / 0.2 / 0.3,
+// 20x20 uniform, corners, no moving and no unknown obstacles): fusion_astar_dwa 99 / 99 / 98 %,
+// fusion_kin_dwa 100 / 99 / 100 %, fusion_alt_dwa (improved_003 with paper 003's weights,
+// velocity 0.4) 96 / 83 / 81 % (with the classic score 97 / 99 / 100 %: the paper's heavy
+// velocity weight drives the robot into the DWA's local minima), pure `dwa` 46 / 6 / 0 %.
+// The literal reading (heading at the key point itself, no turn speed limit, waypoint
+// tolerance 0.5; algos/fusion_drive.h) reached 82 / 51 / 29 %.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "algos/dwa.h"
+#include "algos/dwa_world.h"
+#include "algos/fusion.h"
+#include "algos/registry.h"
+#include "algos/unicycle.h"
+#include "engine/run_executor.h"
+#include "engine/trajectory_judge.h"
+#include "generators/distance_transform.h"
+#include "generators/map_generators.h"
+
+namespace agv {
+namespace {
+
+MapInstance random_map(double density, int index, int size = 20) {
+  MapSpec spec;
+  spec.width = spec.height = size;
+  spec.density = density;
+  spec.require_solvable = true;
+  spec.solvable_rule = CornerRule::no_corner_cut;
+  Rng rng(0xD7A, static_cast<std::uint64_t>(density * 100) * 100000 + index);
+  return make_map(spec, rng);
+}
+
+TEST(Unicycle, StepsComposeToTheClosedFormArc) {
+  const Pose p0{3.0, 4.0, 0.7};
+  for (const double w : {0.7, -0.35, 0.05, 1e-4}) {
+    const double v = 1.3, t = 3.0;
+    Pose p = p0;
+    const int n = 300;
+    for (int i = 0; i < n; ++i) p = unicycle_step(p, v, w, t / n);
+    // x(t) = x0 + v/w (sin(th0 + w t) - sin th0), y(t) = y0 - v/w (cos(th0 + w t) - cos th0).
+    const double x = p0.x + v / w * (std::sin(p0.theta + w * t) - std::sin(p0.theta));
+    const double y = p0.y - v / w * (std::cos(p0.theta + w * t) - std::cos(p0.theta));
+    EXPECT_NEAR(p.x, x, 1e-9) << "w " << w;
+    EXPECT_NEAR(p.y, y, 1e-9) << "w " << w;
+    EXPECT_NEAR(p.theta, p0.theta + w * t, 1e-12) << "w " << w;
+  }
+}
+
+TEST(Unicycle, ZeroTurnRateIsAStraightLine) {
+  Pose p{1.0, 2.0, -0.4};
+  for (int i = 0; i < 50; ++i) p = unicycle_step(p, 2.0, 0.0, 0.1);
+  EXPECT_NEAR(p.x, 1.0 + 10.0 * std::cos(-0.4), 1e-12);
+  EXPECT_NEAR(p.y, 2.0 + 10.0 * std::sin(-0.4), 1e-12);
+  EXPECT_EQ(p.theta, -0.4);
+}
+
+// Random states on random maps: pose with room around it, velocity inside V_m.
+struct State {
+  Pose pose;
+  double v = 0.0, w = 0.0;
+  Point goal;
+};
+State random_state(const Grid& grid, Rng& rng) {
+  const DistanceTransform& dt = grid.distance_transform();
+  State s;
+  do {
+    s.pose = {rng.uniform(0.0, grid.width()), rng.uniform(0.0, grid.height()),
+              rng.uniform(-std::numbers::pi, std::numbers::pi)};
+  } while (dt.clearance(position(s.pose)) < 0.45);
+  s.v = rng.uniform(0.0, 2.0);
+  s.w = rng.uniform(-0.7, 0.7);
+  s.goal = {rng.uniform(0.0, grid.width()), rng.uniform(0.0, grid.height())};
+  return s;
+}
+
+TEST(DynamicWindow, NeverLeavesLimitsOrReach) {
+  DwaParams p;
+  DwaScratch s;
+  int checked = 0;
+  for (int m = 0; m < 20; ++m) {
+    const MapInstance map = random_map(0.2, m);
+    Rng rng(7, m);
+    for (int k = 0; k < 25; ++k) {
+      const State st = random_state(map.grid, rng);
+      DwaTarget target;
+      target.goals = std::span<const Point>(&st.goal, 1);
+      target.from = position(st.pose);
+      const DwaDecision d =
+          dwa_step(p, st.pose, st.v, st.w, target, DwaView{map.grid, {}, {}}, s);
+      const double eps = 1e-12;
+      for (int i = 0; i < d.samples; ++i) {
+        // V_m (eq. 8, v_min = 0) and V_d (eq. 9).
+        ASSERT_GE(s.v[i], -eps);
+        ASSERT_LE(s.v[i], p.v_max + eps);
+        ASSERT_LE(std::abs(s.w[i]), p.w_max + eps);
+        ASSERT_LE(std::abs(s.v[i] - st.v), p.acc_v * p.dt + eps);
+        ASSERT_LE(std::abs(s.w[i] - st.w), p.acc_w * p.dt + eps);
+      }
+      ASSERT_LE(std::abs(d.v - st.v), p.acc_v * p.dt + eps);
+      ASSERT_LE(std::abs(d.w - st.w), p.acc_w * p.dt + eps);
+      ASSERT_LE(d.v, p.v_max + eps);
+      ASSERT_LE(std::abs(d.w), p.w_max + eps);
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 500);
+}
+
+TEST(DynamicWindow, ChosenVelocityCanStopBeforeItsFirstObstacle) {
+  // V_a (eq. 10), checked independently: roll the chosen (v, w) out with the unicycle step,
+  // find the first point closer than robot_radius + safety_margin to an obstacle by the exact
+  // distance transform, and require the braking distance v^2 / (2 a_v) to fit before it.
+  DwaParams p;
+  DwaScratch s;
+  int admissible = 0, with_obstacle = 0;
+  for (int m = 0; m < 20; ++m) {
+    const MapInstance map = random_map(0.3, m);
+    const DistanceTransform& dt = map.grid.distance_transform();
+    Rng rng(11, m);
+    for (int k = 0; k < 25; ++k) {
+      const State st = random_state(map.grid, rng);
+      DwaTarget target;
+      target.goals = std::span<const Point>(&st.goal, 1);
+      target.from = position(st.pose);
+      const DwaDecision d =
+          dwa_step(p, st.pose, st.v, st.w, target, DwaView{map.grid, {}, {}}, s);
+      if (!d.any_admissible) continue;
+      ++admissible;
+      Pose q = st.pose;
+      double travelled = 0.0, free_run = std::numeric_limits<double>::infinity();
+      const int steps = static_cast<int>(std::lround(p.predict_time / p.dt));
+      for (int i = 1; i <= steps; ++i) {
+        q = unicycle_step(q, d.v, d.w, p.dt);
+        if (dt.clearance(position(q)) < p.robot_radius + p.safety_margin) {
+          free_run = travelled;
+          break;
+        }
+        travelled += d.v * p.dt;
+      }
+      if (std::isfinite(free_run)) ++with_obstacle;
+      EXPECT_LE(d.v * d.v / (2.0 * p.acc_v), free_run + 1e-9)
+          << "map " << m << " state " << k << " v " << d.v << " w " << d.w;
+    }
+  }
+  EXPECT_GT(admissible, 200);  // random speeds near obstacles often leave no admissible pair
+  EXPECT_GT(with_obstacle, 20) << "the check must meet obstacles to mean anything";
+}
+
+// Runs a planner through the engine (so its trajectory is judged) on `maps` random maps per
+// density and returns the outcome counts.
+std::map<std::string, int> outcomes(const std::string& planner, const nlohmann::json& params,
+                                    double density, int maps) {
+  const ConfiguredPlanner c = configure_planner(planner, params, "test");
+  Scratch scratch;
+  std::map<std::string, int> counts;
+  for (int m = 0; m < maps; ++m) {
+    const MapInstance map = random_map(density, m);
+    MapReference ref(map.grid, map.start, map.goal);
+    Rng rng(5, m);
+    const RunOutput out = execute_run(*c.planner, ref, rng, scratch, Deadline::never(), {});
+    ++counts[std::string(to_string(out.outcome))];
+  }
+  return counts;
+}
+
+std::string describe(const std::map<std::string, int>& counts) {
+  std::string s;
+  for (const auto& [name, n] : counts) s += name + "=" + std::to_string(n) + " ";
+  return s;
+}
+
+TEST(Fusion, ReachesTheGoalOnRandomSolvableMaps) {
+  // No moving and no unknown obstacles: the judge sees only the static grid.
+  const nlohmann::json quiet = {{"dynamic_obstacles", 0}, {"unknown_obstacles", 0}};
+  for (const char* planner : {"fusion_astar_dwa", "fusion_kin_dwa"}) {
+    int reached = 0, runs = 0;
+    for (const double density : {0.1, 0.2, 0.3}) {
+      const auto counts = outcomes(planner, quiet, density, 60);
+      std::printf("%s density %.1f: %s\n", planner, density, describe(counts).c_str());
+      reached += counts.count("success") ? counts.at("success") : 0;
+      runs += 60;
+      for (const char* collision : {"collision_static", "collision_unknown", "collision_dynamic"})
+        EXPECT_EQ(counts.count(collision), 0u) << planner << " density " << density;
+      EXPECT_EQ(counts.count("invalid_path"), 0u) << planner << " density " << density;
+    }
+    EXPECT_GE(reached, 0.95 * runs) << planner;
+  }
+}
+
+TEST(Fusion, AllThreeVariantsRunWithMovingAndUnknownObstacles) {
+  // Defaults: one moving disc on the reference path, one unknown cell. Every run must end in a
+  // counted outcome, and the planner's own account must agree with the judge (no
+  // invalid_path: a claimed contact the judge cannot confirm would land there).
+  for (const char* planner : {"fusion_astar_dwa", "fusion_alt_dwa", "fusion_kin_dwa", "dwa"}) {
+    const auto counts = outcomes(planner, nlohmann::json::object(), 0.2, 20);
+    std::printf("%s with moving and unknown obstacles: %s\n", planner, describe(counts).c_str());
+    EXPECT_EQ(counts.count("invalid_path"), 0u) << planner;
+    EXPECT_EQ(counts.count("crash"), 0u) << planner;
+  }
+}
+
+TEST(Fusion, HeadOnMovingObstacleIsAvoidedByImprovedDwa) {
+  const Grid grid(20, 20);
+  const Cell start{2, 10}, goal{17, 10};
+  const Params params = Params::resolve(fusion_alt_dwa_planner().params, {}, "test");
+  const FusionOptions options = fusion_options(params, true);
+  int avoided = 0;
+  for (const double offset : {0.0, 0.1, -0.2}) {
+    // A disc of radius 0.4 on the robot's line, coming straight at it at 0.5 m/s.
+    DwaWorld world(grid, {}, {MovingDisc{{13.5, 10.5 + offset}, {-0.5, 0.0}, 0.4}});
+    Scratch scratch;
+    Rng rng(1, 1);
+    const PlanRequest req{grid, start, goal, rng, scratch};
+    const DriveResult run = drive(options, req, world, {centre(start), centre(goal)}, nullptr);
+    const TrajectoryVerdict verdict = judge_trajectory(grid, start, goal, *run.trajectory);
+    EXPECT_EQ(verdict.outcome, Outcome::success) << "offset " << offset << ": " << verdict.message;
+    avoided += verdict.outcome == Outcome::success;
+    double gap = 1e9;
+    for (const auto& [name, value] : verdict.metrics)
+      if (name == "min_clearance_dynamic") gap = value;
+    EXPECT_GE(gap, options.dwa.robot_radius) << "offset " << offset;
+    EXPECT_LT(gap, 3.0) << "the obstacle must have come close enough to matter";
+  }
+  EXPECT_EQ(avoided, 3);
+}
+
+TEST(Fusion, SameSeedSameTrajectory) {
+  const ConfiguredPlanner c = configure_planner("fusion_kin_dwa", nlohmann::json::object(), "t");
+  for (int m = 0; m < 4; ++m) {
+    const MapInstance map = random_map(0.2, m);
+    Scratch s1, s2;
+    Rng r1(3, m), r2(3, m);
+    const PlanResult a = c.planner->plan({map.grid, map.start, map.goal, r1, s1});
+    // The second run reuses a scratch that has already served another map.
+    c.planner->plan({random_map(0.3, 99).grid, map.start, map.goal, r2, s2});
+    Rng r3(3, m);
+    const PlanResult b = c.planner->plan({map.grid, map.start, map.goal, r3, s2});
+    ASSERT_TRUE(a.trajectory && b.trajectory);
+    EXPECT_EQ(a.trajectory->position, b.trajectory->position) << "map " << m;
+    EXPECT_EQ(a.trajectory->heading, b.trajectory->heading) << "map " << m;
+    ASSERT_EQ(a.trajectory->obstacles.size(), b.trajectory->obstacles.size());
+    for (std::size_t j = 0; j < a.trajectory->obstacles.size(); ++j)
+      EXPECT_EQ(a.trajectory->obstacles[j].centre, b.trajectory->obstacles[j].centre);
+    EXPECT_EQ(a.trajectory->unknown_cells.size(), b.trajectory->unknown_cells.size());
+  }
+}
+
+TEST(Fusion, WorldIsTheSameForEveryPlannerOnAMap) {
+  // Paired comparisons need every fusion planner to meet the same obstacles on a map.
+  const MapInstance map = random_map(0.2, 3);
+  std::vector<std::vector<Cell>> unknown;
+  std::vector<Point> first_disc;
+  for (const char* name : {"fusion_astar_dwa", "fusion_alt_dwa", "fusion_kin_dwa", "dwa"}) {
+    const ConfiguredPlanner c = configure_planner(name, nlohmann::json::object(), "t");
+    Scratch scratch;
+    Rng rng(stable_hash(name), 1);  // each planner has its own run stream
+    const PlanResult r = c.planner->plan({map.grid, map.start, map.goal, rng, scratch});
+    ASSERT_TRUE(r.trajectory) << name;
+    unknown.push_back(r.trajectory->unknown_cells);
+    ASSERT_FALSE(r.trajectory->obstacles.empty()) << name;
+    first_disc.push_back(r.trajectory->obstacles[0].centre[0]);
+  }
+  for (std::size_t i = 1; i < unknown.size(); ++i) {
+    EXPECT_EQ(unknown[i], unknown[0]);
+    EXPECT_EQ(first_disc[i], first_disc[0]);
+  }
+}
+
+TEST(Fusion, UnregisteredGlobalPlannerIsAnInputError) {
+  // A name in the choice list that this build does not register is refused when configured;
+  // one outside the list is refused by the parameter check.
+  EXPECT_THROW(configure_planner("fusion_astar_dwa", {{"global_planner", "no_such"}}, "t"),
+               InputError);
+  for (const auto& name : {"astar", "alt_astar", "kin_astar"}) {
+    if (find_planner(name) != nullptr) {
+      EXPECT_NO_THROW(configure_planner("fusion_astar_dwa", {{"global_planner", name}}, "t"));
+    }
+  }
+}
+
+// A kinematically consistent straight run: v m/s along +x from `start`'s centre, n steps.
+Trajectory straight_run(Cell start, double v, int n) {
+  Trajectory tr;
+  tr.robot_radius = 0.3;
+  tr.goal_tolerance = 0.5;
+  Pose p{start.x + 0.5, start.y + 0.5, 0.0};
+  for (int i = 0; i <= n; ++i) {
+    tr.t.push_back(0.1 * i);
+    tr.position.push_back(position(p));
+    tr.heading.push_back(p.theta);
+    if (i < n) {
+      tr.v.push_back(v);
+      tr.w.push_back(0.0);
+      p = unicycle_step(p, v, 0.0, 0.1);
+    }
+  }
+  return tr;
+}
+
+TEST(Judge, FlagsInjectedCollisions) {
+  Grid grid(20, 20);
+  const Cell start{1, 10}, goal{11, 10};
+  Trajectory clean = straight_run(start, 1.0, 100);  // 10 cells along row 10, to the goal
+  clean.end_reason = "reached";
+  EXPECT_EQ(judge_trajectory(grid, start, goal, clean).outcome, Outcome::success);
+
+  // Static: a cell on the row.
+  Grid blocked = grid;
+  blocked.set_blocked(6, 10, true);
+  EXPECT_EQ(judge_trajectory(blocked, start, goal, clean).outcome, Outcome::collision_static);
+  // Grazing: a cell beside the row, 0.5 from the centre line, passes; the same cell with a
+  // robot radius above 0.5 does not.
+  Grid beside = grid;
+  beside.set_blocked(6, 11, true);
+  EXPECT_EQ(judge_trajectory(beside, start, goal, clean).outcome, Outcome::success);
+  Trajectory fat = clean;
+  fat.robot_radius = 0.51;
+  EXPECT_EQ(judge_trajectory(beside, start, goal, fat).outcome, Outcome::collision_static);
+
+  // Unknown: the same cell as an unknown obstacle.
+  Trajectory unknown = clean;
+  unknown.unknown_cells = {{6, 10}};
+  EXPECT_EQ(judge_trajectory(grid, start, goal, unknown).outcome, Outcome::collision_unknown);
+
+  // Dynamic: a disc crossing the row at x = 7.5 as the robot passes.
+  Trajectory crossing = clean;
+  DynamicTrack track;
+  track.radius = 0.2;
+  for (std::size_t i = 0; i < clean.t.size(); ++i) {
+    const double t = clean.t[i];
+    track.centre.push_back({7.5, 10.5 + 4.0 * (t - 6.05)});  // passes y = 10.5 at t = 6.05 s
+  }
+  crossing.obstacles = {track};
+  const TrajectoryVerdict hit = judge_trajectory(grid, start, goal, crossing);
+  EXPECT_EQ(hit.outcome, Outcome::collision_dynamic) << hit.message;
+  // Shifted far away in time, the same disc misses.
+  Trajectory missing = clean;
+  for (auto& c : track.centre) c.x = 15.5;
+  missing.obstacles = {track};
+  EXPECT_EQ(judge_trajectory(grid, start, goal, missing).outcome, Outcome::success);
+
+  // The planner's account is checked too.
+  Trajectory short_run = straight_run(start, 1.0, 50);
+  short_run.end_reason = "reached";
+  EXPECT_EQ(judge_trajectory(grid, start, goal, short_run).outcome, Outcome::invalid_path);
+  short_run.end_reason = "timeout";
+  EXPECT_EQ(judge_trajectory(grid, start, goal, short_run).outcome, Outcome::sim_timeout);
+  short_run.end_reason = "stuck";
+  EXPECT_EQ(judge_trajectory(grid, start, goal, short_run).outcome, Outcome::stuck);
+  short_run.end_reason = "contact";
+  EXPECT_EQ(judge_trajectory(grid, start, goal, short_run).outcome, Outcome::invalid_path);
+  Trajectory teleport = clean;
+  teleport.position[40].y += 0.01;
+  EXPECT_EQ(judge_trajectory(grid, start, goal, teleport).outcome, Outcome::invalid_path);
+  Trajectory elsewhere = clean;
+  EXPECT_EQ(judge_trajectory(grid, {2, 10}, goal, elsewhere).outcome, Outcome::invalid_path);
+}
+
+TEST(Judge, MetricsComeFromTheTrajectory) {
+  const Grid grid(20, 20);
+  const Cell start{1, 10}, goal{11, 10};
+  Trajectory tr = straight_run(start, 1.0, 100);
+  tr.end_reason = "reached";
+  const TrajectoryVerdict v = judge_trajectory(grid, start, goal, tr);
+  std::map<std::string, double> m(v.metrics.begin(), v.metrics.end());
+  EXPECT_NEAR(m.at("travelled_length"), 10.0, 1e-9);
+  EXPECT_NEAR(m.at("sim_time_s"), 10.0, 1e-9);
+  EXPECT_EQ(m.at("control_steps"), 100.0);
+  EXPECT_NEAR(m.at("min_clearance_static"), 1.5, 1e-9);  // the start, 1.5 from the left wall
+  EXPECT_EQ(m.count("min_clearance_dynamic"), 0u);
+  EXPECT_EQ(m.at("heading_change_sum"), 0.0);
+  EXPECT_EQ(m.at("mean_abs_w"), 0.0);
+}
+
+}  // namespace
+}  // namespace agv

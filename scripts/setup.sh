@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages agvbench needs (only the missing ones), then configures and builds
-# it in ./build. Works on a bare Debian 12 as root (or with sudo). Usage: scripts/setup.sh
+# it in ./build. Works on a bare Debian 12 as root (or with sudo).
+# Usage: scripts/setup.sh [TARGET...]   (default: everything; scripts/sweep.sh builds agvbench only)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,5 +21,9 @@ if ((${#missing[@]})); then
 fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build build -j "$jobs"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+if (($#)); then
+  cmake --build build -j "$jobs" --target "$@"
+else
+  cmake --build build -j "$jobs"
+fi

@@ -42,6 +42,18 @@ std::pair<int, int> parse_shard(const std::string& text) {
   return {i, n};
 }
 
+// "16 cells x 100 maps x 13 planners = 20800 runs", or, with scoped planners, what they leave.
+std::string run_count_text(const SweepConfig& config, const SweepPlan& plan) {
+  const long long full = plan.map_tasks() * static_cast<long long>(config.planners.size());
+  const long long runs = scheduled_runs(config, plan);
+  std::string text = std::to_string(plan.cells.size()) + " cells x " +
+                     std::to_string(plan.maps_per_cell) + " maps x " +
+                     std::to_string(config.planners.size()) + " planners = ";
+  if (runs == full) return text + std::to_string(runs) + " runs";
+  return text + std::to_string(full) + ", of which " + std::to_string(runs) +
+         " runs are scheduled (planners with an \"only\" scope)";
+}
+
 }  // namespace
 
 // The default config is found from any working directory: first as given, then in the checkout
@@ -73,10 +85,8 @@ int command_run(const RunCommand& cmd) {
   install_stop_handlers();
   const SweepPlan plan = plan_sweep(config);
   if (!cmd.quiet) {
-    std::fprintf(stderr, "agvbench: sweep \"%s\": %zu cells x %d maps x %zu planners = %lld runs\n",
-                 config.name.c_str(), plan.cells.size(), plan.maps_per_cell,
-                 config.planners.size(),
-                 static_cast<long long>(plan.map_tasks() * static_cast<long long>(config.planners.size())));
+    std::fprintf(stderr, "agvbench: sweep \"%s\": %s\n", config.name.c_str(),
+                 run_count_text(config, plan).c_str());
   }
   SweepResults results = run_sweep(config, options);
   write_json_atomic(build_report(config, results), config.report_path);
@@ -115,8 +125,9 @@ int command_merge(const std::string& config_path, const std::vector<std::string>
   write_json_atomic(build_report(config, results), path);
   std::int64_t present = 0;
   for (const auto& r : results.runs) present += r.done ? 1 : 0;
-  std::printf("merged %zu journals: %lld of %zu runs present%s; report: %s\n", journals.size(),
-              static_cast<long long>(present), results.runs.size(),
+  std::printf("merged %zu journals: %lld of %lld runs present%s; report: %s\n", journals.size(),
+              static_cast<long long>(present),
+              static_cast<long long>(scheduled_runs(config, results.plan)),
               results.complete ? "" : " (INCOMPLETE coverage: the report says so)", path.c_str());
   (void)records;
   return results.complete ? 0 : 1;
@@ -125,9 +136,7 @@ int command_merge(const std::string& config_path, const std::vector<std::string>
 int command_validate(const std::string& config_path) {
   const SweepConfig config = load_config(config_path);
   const SweepPlan plan = plan_sweep(config);
-  std::printf("%s: ok: %zu cells x %d maps x %zu planners = %lld runs\n", config_path.c_str(),
-              plan.cells.size(), plan.maps_per_cell, config.planners.size(),
-              static_cast<long long>(plan.map_tasks() * static_cast<long long>(config.planners.size())));
+  std::printf("%s: ok: %s\n", config_path.c_str(), run_count_text(config, plan).c_str());
   return 0;
 }
 

@@ -73,7 +73,52 @@ void WorkerProcess::spawn() {
   to_child_ = in_pipe[1];
   from_child_ = out_pipe[0];
   buffer_.clear();
-  write_all(to_child_, config_line_ + "\n");
+  std::string why;
+  try {
+    write_all(to_child_, config_line_ + "\n");
+  } catch (const std::runtime_error&) {
+    // Died before reading its config; the read below says how.
+  }
+  // Generous: the worker only parses the config and configures its planners.
+  std::string line;
+  const ReadStatus status = read_line(Clock::now() + std::chrono::seconds(60), line);
+  if (status == ReadStatus::line) {
+    const auto hello = nlohmann::json::parse(line, nullptr, false);
+    if (hello.is_object() && hello.value("ready", false)) return;
+    why = hello.is_object() && hello.contains("fatal") && hello["fatal"].is_string()
+              ? hello["fatal"].get<std::string>()
+              : "unexpected first line \"" + line.substr(0, 200) + "\"";
+    stop();
+  } else if (status == ReadStatus::timeout) {
+    stop();
+    why = "no answer within 60 s";
+  } else {
+    why = describe_exit();
+    stop();
+  }
+  throw std::runtime_error("isolation worker failed to start: " + why);
+}
+
+WorkerProcess::ReadStatus WorkerProcess::read_line(Clock::time_point deadline, std::string& line) {
+  for (;;) {
+    const auto nl = buffer_.find('\n');
+    if (nl != std::string::npos) {
+      line = buffer_.substr(0, nl);
+      buffer_.erase(0, nl + 1);
+      return ReadStatus::line;
+    }
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (left <= 0) return ReadStatus::timeout;
+    pollfd pfd{from_child_, POLLIN, 0};
+    const int pr = ::poll(&pfd, 1, static_cast<int>(std::min<long long>(left, 1000)));
+    if (pr <= 0) continue;  // EINTR or a poll slice without data: check the deadline again
+    char buf[65536];
+    const ssize_t n = ::read(from_child_, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return ReadStatus::closed;
+    buffer_.append(buf, static_cast<std::size_t>(n));
+  }
 }
 
 void WorkerProcess::stop() {
@@ -107,7 +152,6 @@ std::string WorkerProcess::describe_exit() {
 
 WorkerProcess::Reply WorkerProcess::run(std::int64_t task, std::size_t planner,
                                         double hard_limit_s) {
-  using Clock = std::chrono::steady_clock;
   Reply reply;
   if (pid_ < 0) spawn();
   const auto start = Clock::now();
@@ -118,48 +162,34 @@ WorkerProcess::Reply WorkerProcess::run(std::int64_t task, std::size_t planner,
   } catch (const std::runtime_error&) {
     // Died between runs; fall through to reading, which reports the death.
   }
-  for (;;) {
-    const auto nl = buffer_.find('\n');
-    if (nl != std::string::npos) {
-      const std::string line = buffer_.substr(0, nl);
-      buffer_.erase(0, nl + 1);
-      reply.wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
+  std::string line;
+  const ReadStatus status = read_line(deadline, line);
+  reply.wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
+  switch (status) {
+    case ReadStatus::line:
       reply.record = nlohmann::json::parse(line, nullptr, false);
-      if (reply.record.is_discarded()) {
-        reply.outcome = Outcome::crash;
-        reply.message = "worker sent a malformed record";
-        stop();
+      if (!reply.record.is_discarded()) {
+        reply.ok = true;
         return reply;
       }
-      reply.ok = true;
-      return reply;
-    }
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
-    if (left <= 0) {
+      reply.outcome = Outcome::crash;
+      reply.message = "worker sent a malformed record";
       stop();
-      reply.wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
+      return reply;
+    case ReadStatus::timeout:
+      stop();
       reply.outcome = Outcome::timeout;
       reply.message = "killed at the hard limit of " + std::to_string(hard_limit_s) + " s";
       return reply;
-    }
-    pollfd pfd{from_child_, POLLIN, 0};
-    const int pr = ::poll(&pfd, 1, static_cast<int>(std::min<long long>(left, 1000)));
-    if (pr < 0 && errno == EINTR) continue;
-    if (pr <= 0) continue;
-    char buf[65536];
-    const ssize_t n = ::read(from_child_, buf, sizeof buf);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      reply.wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
+    case ReadStatus::closed:
       reply.outcome = Outcome::crash;
       reply.message = describe_exit();
       ::close(to_child_);
       ::close(from_child_);
       to_child_ = from_child_ = -1;
       return reply;
-    }
-    buffer_.append(buf, static_cast<std::size_t>(n));
   }
+  return reply;
 }
 
 int worker_main(std::int64_t memory_mb) {
@@ -173,13 +203,20 @@ int worker_main(std::int64_t memory_mb) {
   }
   std::string line;
   if (!std::getline(std::cin, line)) return 1;
-  const SweepConfig config = parse_config(nlohmann::json::parse(line).at("config"));
+  SweepConfig config;
+  std::vector<ConfiguredPlanner> planners;
+  try {
+    config = parse_config(nlohmann::json::parse(line).at("config"));
+    for (std::size_t i = 0; i < config.planners.size(); ++i)
+      planners.push_back(configure_planner(config.planners[i].name, config.planners[i].params,
+                                           "planners[" + std::to_string(i) + "]"));
+  } catch (const std::exception& e) {
+    std::cout << nlohmann::json{{"fatal", e.what()}}.dump() << "\n" << std::flush;
+    return 2;
+  }
+  std::cout << nlohmann::json{{"ready", true}}.dump() << "\n" << std::flush;
   const SweepPlan plan = plan_sweep(config);
   const std::string hash = config_hash(config);
-  std::vector<ConfiguredPlanner> planners;
-  for (std::size_t i = 0; i < config.planners.size(); ++i)
-    planners.push_back(configure_planner(config.planners[i].name, config.planners[i].params,
-                                         "planners[" + std::to_string(i) + "]"));
   Scratch scratch;
   std::int64_t cached_task = -1;
   std::optional<MapInstance> map;

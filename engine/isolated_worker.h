@@ -5,12 +5,15 @@
 // or oom) and one worker restart; the sweep goes on.
 //
 // Protocol, one JSON object per line over the worker's stdin/stdout: the parent sends the config
-// as run ({"config": ...}) once, then requests {"task": t, "planner": p}; the worker answers each
-// with the run's record (engine/run_record.h). Workers are started with posix_spawn, which is
+// as run ({"config": ...}) once, and the worker answers {"ready": true}, or {"fatal": message}
+// when it cannot take that config (a failed sweep, not a crashed run); then the parent requests
+// {"task": t, "planner": p} and the worker answers each with the run's record
+// (engine/run_record.h). Workers are started with posix_spawn, which is
 // safe from a multi-threaded parent (no fork of a process holding other threads' locks).
 
 #include <sys/types.h>
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -48,7 +51,12 @@ class WorkerProcess {
   Reply run(std::int64_t task, std::size_t planner, double hard_limit_s);
 
  private:
+  using Clock = std::chrono::steady_clock;
+  enum class ReadStatus { line, timeout, closed };
+  // Throws std::runtime_error when the worker cannot start or refuses the config.
   void spawn();
+  // The worker's next line, unless the deadline passes or the worker's stdout closes first.
+  ReadStatus read_line(Clock::time_point deadline, std::string& line);
   void stop();  // kill and reap
   std::string describe_exit();
 

@@ -62,6 +62,9 @@ bool RecordRestorer::restore(const json& rec, const std::string& where) {
       throw InputError(where + ": map_index out of range");
     const std::int64_t task =
         static_cast<std::int64_t>(cell->second) * results_.plan.maps_per_cell + map_index;
+    if (!results_.scheduled(task, planner->second))
+      throw InputError(where + ": planner \"" + planner->first +
+                       "\" is not scheduled on this map (outside its \"only\" scope)");
     RunSlot& slot = results_.run(task, planner->second);
     if (slot.done) return false;
     const auto outcome = outcome_from_string(rec.at("outcome").get<std::string>());

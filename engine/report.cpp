@@ -140,7 +140,7 @@ json paired_cell_json(const SweepConfig& config, const SweepResults& r, const Sw
   json out = json::array();
   std::vector<double> va, vb;
   for (std::size_t p = 0; p < r.labels.size(); ++p) {
-    if (p == base) continue;
+    if (p == base || r.maps_of(cell, p) == 0) continue;
     json metrics = json::object();
     for (auto name : kPairedMetrics) {
       paired_values(r, cell, p, base, metric_index(name), va, vb);
@@ -172,8 +172,9 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
       fractions.push_back(ms.obstacle_fraction);
     }
     json planners = json::array();
+    // A planner scoped out of this cell has no entry in it (rather than one with no runs).
     for (std::size_t p = 0; p < r.labels.size(); ++p)
-      planners.push_back(planner_cell_json(r, cell, p, config.planners[p]));
+      if (r.maps_of(cell, p) > 0) planners.push_back(planner_cell_json(r, cell, p, config.planners[p]));
     cells.push_back({{"cell", cell.key},
                      {"generator", cell.generator},
                      {"width", cell.size.width},
@@ -185,10 +186,13 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
                      {"planners", planners},
                      {"paired", paired_cell_json(config, r, cell)}});
   }
-  std::int64_t maps_missing = 0;
+  std::int64_t maps_missing = 0, runs_expected = 0;
   for (std::int64_t t = 0; t < r.plan.map_tasks(); ++t) {
     bool any = false;
-    for (std::size_t p = 0; p < r.labels.size(); ++p) any = any || r.run(t, p).done;
+    for (std::size_t p = 0; p < r.labels.size(); ++p) {
+      any = any || r.run(t, p).done;
+      runs_expected += r.scheduled(t, p) ? 1 : 0;
+    }
     maps_missing += any ? 0 : 1;
   }
   json report = {{"schema_version", kReportSchemaVersion},
@@ -196,7 +200,7 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
           {"config", config_as_run(config)},
           {"complete", r.complete},
           {"coverage",
-           {{"runs_expected", static_cast<std::int64_t>(r.runs.size())},
+           {{"runs_expected", runs_expected},
             {"runs_present", runs_done},
             {"maps_missing", maps_missing}}},
           {"totals", {{"cells", r.plan.cells.size()}, {"maps", r.plan.map_tasks()}, {"runs", runs_done}}},

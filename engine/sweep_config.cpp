@@ -140,7 +140,62 @@ void parse_map_options(const json& j, MapSpec& map) {
   r.finish();
 }
 
-std::vector<PlannerEntry> parse_planners(ObjectReader& r) {
+std::vector<std::string> parse_generators(ObjectReader& r) {
+  std::vector<std::string> generators;
+  const json& arr = require_array(r, "generators");
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    const std::string f = r.field("generators") + "[" + std::to_string(i) + "]";
+    if (!arr[i].is_string()) throw InputError(f + ": expected a generator name");
+    const auto name = arr[i].get<std::string>();
+    bool known = false;
+    for (const auto& g : generator_names()) known = known || g == name;
+    if (!known) {
+      std::string list;
+      for (const auto& g : generator_names()) list += (list.empty() ? "" : ", ") + g;
+      throw InputError(f + ": unknown generator \"" + name + "\" (known: " + list + ")");
+    }
+    generators.push_back(name);
+  }
+  return generators;
+}
+
+std::vector<double> parse_densities(ObjectReader& r) {
+  std::vector<double> densities;
+  const json& arr = require_array(r, "densities");
+  for (std::size_t i = 0; i < arr.size(); ++i)
+    densities.push_back(ObjectReader::check_number(
+        arr[i], r.field("densities") + "[" + std::to_string(i) + "]", 0.0, 0.95));
+  return densities;
+}
+
+// Every value a scope names must be one the sweep has: a typo would otherwise leave a planner
+// silently out of a cell.
+template <class T>
+void require_subset(const std::vector<T>& values, const std::vector<T>& sweep,
+                    const std::string& field, const std::string& axis) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    bool found = false;
+    for (const auto& v : sweep) found = found || v == values[i];
+    if (!found)
+      throw InputError(field + "[" + std::to_string(i) + "]: not one of the sweep's " + axis);
+  }
+}
+
+PlannerScope parse_scope(const json& j, const std::string& where, const SweepConfig& c) {
+  ObjectReader r(j, where + ".only.");
+  PlannerScope s;
+  if (r.has("generators")) s.generators = parse_generators(r);
+  if (r.has("sizes")) s.sizes = parse_sizes(r);
+  if (r.has("densities")) s.densities = parse_densities(r);
+  s.maps_per_cell = static_cast<int>(r.integer("maps_per_cell", 0, 1, c.maps_per_cell));
+  r.finish();
+  require_subset(s.generators, c.generators, r.field("generators"), "generators");
+  require_subset(s.sizes, c.sizes, r.field("sizes"), "sizes");
+  require_subset(s.densities, c.densities, r.field("densities"), "densities");
+  return s;
+}
+
+std::vector<PlannerEntry> parse_planners(ObjectReader& r, const SweepConfig& sweep) {
   std::vector<PlannerEntry> planners;
   std::set<std::string> labels;
   const json& arr = require_array(r, "planners");
@@ -155,16 +210,16 @@ std::vector<PlannerEntry> parse_planners(ObjectReader& r) {
       e.name = p.string("name", "");
       e.label = p.string("label", "");
       if (p.has("params")) e.params = p.raw("params");
+      if (p.has("only")) e.only = parse_scope(p.raw("only"), where, sweep);
       p.finish();
     } else {
-      throw InputError(where + ": expected a planner name or {\"name\": ..., \"params\": {...}}");
+      throw InputError(where + ": expected a planner name or {\"name\": ..., \"params\": {...}, \"only\": {...}}");
     }
     if (e.label.empty()) e.label = e.name;
     if (!labels.insert(e.label).second)
       throw InputError(where + ".label: \"" + e.label +
                        "\" appears twice (give one of them a distinct \"label\")");
-    ConfiguredPlanner c = configure_planner(e.name, e.params, where + " (" + e.label + ")");
-    e.resolved = c.params.values();
+    e.resolved = configure_planner(e.name, e.params, where + " (" + e.label + ")").params.values();
     planners.push_back(std::move(e));
   }
   return planners;
@@ -177,35 +232,13 @@ SweepConfig parse_config(const json& j) {
   ObjectReader r(j, "");
   c.name = r.string("name", c.name);
   c.seed = static_cast<std::uint64_t>(r.integer("seed", 1, 0, (1LL << 53)));
-  if (r.has("generators")) {
-    c.generators.clear();
-    const json& arr = require_array(r, "generators");
-    for (std::size_t i = 0; i < arr.size(); ++i) {
-      const std::string f = "generators[" + std::to_string(i) + "]";
-      if (!arr[i].is_string()) throw InputError(f + ": expected a generator name");
-      const auto name = arr[i].get<std::string>();
-      bool known = false;
-      for (const auto& g : generator_names()) known = known || g == name;
-      if (!known) {
-        std::string list;
-        for (const auto& g : generator_names()) list += (list.empty() ? "" : ", ") + g;
-        throw InputError(f + ": unknown generator \"" + name + "\" (known: " + list + ")");
-      }
-      c.generators.push_back(name);
-    }
-  }
+  if (r.has("generators")) c.generators = parse_generators(r);
   if (r.has("sizes")) c.sizes = parse_sizes(r);
-  if (r.has("densities")) {
-    c.densities.clear();
-    const json& arr = require_array(r, "densities");
-    for (std::size_t i = 0; i < arr.size(); ++i)
-      c.densities.push_back(ObjectReader::check_number(
-          arr[i], "densities[" + std::to_string(i) + "]", 0.0, 0.95));
-  }
+  if (r.has("densities")) c.densities = parse_densities(r);
   c.maps_per_cell = static_cast<int>(r.integer("maps_per_cell", c.maps_per_cell, 1, 10000000));
   if (r.has("map")) parse_map_options(r.raw("map"), c.map);
   if (!r.has("planners")) throw InputError("planners: missing (list at least one planner)");
-  c.planners = parse_planners(r);
+  c.planners = parse_planners(r, c);
   c.baseline = r.string("baseline", "");
   if (c.baseline.empty()) {
     c.baseline = c.planners.front().label;
@@ -216,6 +249,11 @@ SweepConfig parse_config(const json& j) {
     for (const auto& p : c.planners) found = found || p.label == c.baseline;
     if (!found) throw InputError("baseline: \"" + c.baseline + "\" is not a planner label of this sweep");
   }
+  for (const auto& p : c.planners)
+    if (p.label == c.baseline && !p.only.everywhere())
+      throw InputError("baseline: \"" + c.baseline +
+                       "\" has an \"only\" scope; the baseline runs on every map so that every "
+                       "planner can be paired with it");
   c.time_limit_s = r.number("time_limit_s", c.time_limit_s, 1e-3, 86400.0);
   if (r.has("motion")) {
     ObjectReader m(r.raw("motion"), "motion.");
@@ -261,17 +299,37 @@ SweepConfig load_config(const std::string& path) {
   }
 }
 
+namespace {
+
+json sizes_json(const std::vector<GridSize>& sizes) {
+  json out = json::array();
+  for (const auto& s : sizes) out.push_back({s.width, s.height});
+  return out;
+}
+
+}  // namespace
+
 json config_as_run(const SweepConfig& c) {
-  json sizes = json::array();
-  for (const auto& s : c.sizes) sizes.push_back({s.width, s.height});
   json planners = json::array();
-  for (const auto& p : c.planners)
-    planners.push_back({{"label", p.label}, {"name", p.name}, {"params", p.resolved}});
+  for (const auto& p : c.planners) {
+    json entry = {{"label", p.label}, {"name", p.name}, {"params", p.resolved}};
+    // Written only when scoped, so configs without scopes keep their hash (and journals).
+    if (!p.only.everywhere()) {
+      // Only the axes it restricts: parse_config reads this back (isolation workers get it).
+      json only = json::object();
+      if (!p.only.generators.empty()) only["generators"] = p.only.generators;
+      if (!p.only.sizes.empty()) only["sizes"] = sizes_json(p.only.sizes);
+      if (!p.only.densities.empty()) only["densities"] = p.only.densities;
+      if (p.only.maps_per_cell > 0) only["maps_per_cell"] = p.only.maps_per_cell;
+      entry["only"] = std::move(only);
+    }
+    planners.push_back(std::move(entry));
+  }
   const MapSpec& m = c.map;
   return {{"name", c.name},
           {"seed", c.seed},
           {"generators", c.generators},
-          {"sizes", sizes},
+          {"sizes", sizes_json(c.sizes)},
           {"densities", c.densities},
           {"maps_per_cell", c.maps_per_cell},
           {"map",

@@ -15,16 +15,32 @@
 
 namespace agv {
 
+struct GridSize {
+  int width = 0;
+  int height = 0;
+  bool operator==(const GridSize&) const = default;
+};
+
+// Where a planner runs when not on every map of the sweep ("only" in the config): a planner
+// that costs a hundred times more than a grid search (the fusion simulations) can join a big
+// sweep on a subset of its cells and on the first maps of each, and is still paired map by map
+// with the baseline, which runs everywhere. An empty list means every value of that axis.
+struct PlannerScope {
+  std::vector<std::string> generators;
+  std::vector<GridSize> sizes;
+  std::vector<double> densities;
+  int maps_per_cell = 0;  // the first N maps of each cell; 0 = all of them
+  bool everywhere() const {
+    return generators.empty() && sizes.empty() && densities.empty() && maps_per_cell == 0;
+  }
+};
+
 struct PlannerEntry {
   std::string label;  // unique within the sweep; defaults to the registry name
   std::string name;   // registry name
   nlohmann::json params = nlohmann::json::object();  // as given
   nlohmann::json resolved;                           // every parameter with its value
-};
-
-struct GridSize {
-  int width = 0;
-  int height = 0;
+  PlannerScope only;
 };
 
 struct SweepConfig {

@@ -1,5 +1,6 @@
 #include "engine/sweep_plan.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace agv {
@@ -33,6 +34,27 @@ SweepPlan plan_sweep(const SweepConfig& config) {
     }
   }
   return plan;
+}
+
+int scoped_maps(const PlannerEntry& planner, const SweepCell& cell, int maps_per_cell) {
+  const PlannerScope& only = planner.only;
+  const auto listed = [](const auto& list, const auto& value) {
+    if (list.empty()) return true;
+    for (const auto& v : list)
+      if (v == value) return true;
+    return false;
+  };
+  if (!listed(only.generators, cell.generator) || !listed(only.sizes, cell.size) ||
+      !listed(only.densities, cell.density))
+    return 0;
+  return only.maps_per_cell > 0 ? std::min(only.maps_per_cell, maps_per_cell) : maps_per_cell;
+}
+
+std::int64_t scheduled_runs(const SweepConfig& config, const SweepPlan& plan) {
+  std::int64_t runs = 0;
+  for (const auto& cell : plan.cells)
+    for (const auto& p : config.planners) runs += scoped_maps(p, cell, plan.maps_per_cell);
+  return runs;
 }
 
 Rng map_rng(std::uint64_t seed, const SweepCell& cell, int map_index) {

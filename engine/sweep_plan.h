@@ -33,6 +33,11 @@ struct SweepPlan {
 
 SweepPlan plan_sweep(const SweepConfig& config);
 
+// How many maps of `cell` the planner runs: its first N (all, 0 or its scope's maps_per_cell).
+int scoped_maps(const PlannerEntry& planner, const SweepCell& cell, int maps_per_cell);
+// The runs a sweep schedules: over planners and cells, their scoped map counts.
+std::int64_t scheduled_runs(const SweepConfig& config, const SweepPlan& plan);
+
 // Short text of a density that round-trips the configured value ("0.2", "0.35").
 std::string density_text(double density);
 

@@ -62,12 +62,17 @@ SweepResults empty_results(const SweepConfig& config) {
   res.maps.resize(static_cast<std::size_t>(tasks));
   res.runs.resize(static_cast<std::size_t>(tasks) * res.labels.size());
   for (auto& r : res.runs) r.metrics.fill(std::numeric_limits<double>::quiet_NaN());
+  for (const auto& cell : res.plan.cells)
+    for (const auto& p : config.planners)
+      res.scoped_maps.push_back(scoped_maps(p, cell, res.plan.maps_per_cell));
   return res;
 }
 
 void update_completeness(SweepResults& results) {
   results.complete = true;
-  for (const auto& r : results.runs) results.complete = results.complete && r.done;
+  for (std::int64_t t = 0; t < results.plan.map_tasks(); ++t)
+    for (std::size_t p = 0; p < results.labels.size(); ++p)
+      results.complete = results.complete && (results.run(t, p).done || !results.scheduled(t, p));
 }
 
 SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
@@ -99,7 +104,8 @@ SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
   for (std::int64_t t = 0; t < tasks; ++t) {
     if (t % options.shard_count != options.shard_index) continue;
     bool pending = false;
-    for (std::size_t p = 0; p < res.labels.size(); ++p) pending = pending || !res.run(t, p).done;
+    for (std::size_t p = 0; p < res.labels.size(); ++p)
+      pending = pending || (res.scheduled(t, p) && !res.run(t, p).done);
     if (pending) todo.push_back(t);
   }
 
@@ -139,12 +145,12 @@ SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
       return;
     }
     const std::int64_t task = todo[i];
-    Worker& w = workers.local();
     const SweepCell& cell = res.plan.cell_of(task);
     const int map_index = res.plan.map_index_of(task);
     MapSlot& ms = res.maps[static_cast<std::size_t>(task)];
     std::string lines;
     try {
+      Worker& w = workers.local();  // may start an isolation worker, which may fail
       if (!iso.enabled) {
         Rng rng = map_rng(config.seed, cell, map_index);
         const MapInstance inst = make_map(cell.spec, rng);
@@ -152,7 +158,7 @@ SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
         MapReference ref(inst.grid, inst.start, inst.goal);
         for (std::size_t p = 0; p < config.planners.size(); ++p) {
           RunSlot& slot = res.run(task, p);
-          if (slot.done) continue;
+          if (slot.done || !res.scheduled(task, p)) continue;
           Rng prng = run_rng(config.seed, cell, map_index, config.planners[p].label);
           const RunOutput out = execute_run(*w.planners[p].planner, ref, prng, w.scratch,
                                             Deadline::after(budget), config.motion);
@@ -164,7 +170,7 @@ SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
         }
       } else {
         for (std::size_t p = 0; p < config.planners.size(); ++p) {
-          if (res.run(task, p).done) continue;
+          if (res.run(task, p).done || !res.scheduled(task, p)) continue;
           WorkerProcess::Reply reply = w.process->run(task, p, hard_limit);
           nlohmann::json record;
           if (reply.ok) {

@@ -39,15 +39,24 @@ struct SweepResults {
   std::vector<std::string> labels;  // planner labels, config order
   std::vector<MapSlot> maps;        // by map task
   std::vector<RunSlot> runs;        // by map task * labels.size() + planner
+  // By cell * labels.size() + planner: the planner runs on the cell's first N maps (scopes).
+  std::vector<int> scoped_maps;
   double wall_s = 0.0;
   int threads = 0;
-  bool complete = true;      // every run of the sweep is present
+  bool complete = true;      // every scheduled run of the sweep is present
   bool interrupted = false;  // stopped before its tasks were done
   std::int64_t restored_runs = 0;
   std::int64_t executed_runs = 0;
   int shard_index = 0;
   int shard_count = 1;
 
+  int maps_of(const SweepCell& cell, std::size_t planner) const {
+    return scoped_maps[static_cast<std::size_t>(cell.index) * labels.size() + planner];
+  }
+  // Whether the sweep runs this planner on this map task at all.
+  bool scheduled(std::int64_t task, std::size_t planner) const {
+    return plan.map_index_of(task) < maps_of(plan.cell_of(task), planner);
+  }
   RunSlot& run(std::int64_t task, std::size_t planner) {
     return runs[static_cast<std::size_t>(task) * labels.size() + planner];
   }

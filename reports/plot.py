@@ -87,7 +87,8 @@ class Report:
         self.cell_edge = edge if finite(edge) else 1.0
         nonbase = [l for l in self.labels if l != self.baseline]
         palette = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
-                   "#17becf", "#bcbd22", "#7f7f7f", "#393b79", "#ad494a"]
+                   "#17becf", "#bcbd22", "#7f7f7f", "#393b79", "#ad494a", "#e6550d", "#31a354",
+                   "#756bb1", "#843c39", "#3182bd", "#8ca252", "#d6616b", "#636363"]
         self.colour = {}
         self.style = {}
         for i, label in enumerate(nonbase):
@@ -260,18 +261,38 @@ def figure_legend(fig, ax_or_fig, rep, labels, loc="upper center", ncol=None, an
     ax_or_fig.legend(handles=handles, loc=loc, ncol=ncol or min(len(handles), 6), **kw)
 
 
+LEGEND_ENTRY_IN = 2.2   # width of one legend entry (handle + the longest planner labels), inches
+LEGEND_ROW_IN = 0.24    # height of one legend row at legend.fontsize 9
+TITLE_IN = 0.45         # the suptitle's band
+
+
+def top_legend(fig, rep, labels):
+    """A legend above the panels, wrapped to the figure's width in as many rows as the labels
+    need; grows the figure by the legend's height and returns the top of the panels' area (a
+    figure fraction) for tight_layout."""
+    ncol = max(1, min(len(labels), int(fig.get_figwidth() // LEGEND_ENTRY_IN)))
+    legend_in = LEGEND_ROW_IN * math.ceil(len(labels) / ncol) + 0.1
+    fig.set_figheight(fig.get_figheight() + legend_in)
+    height = fig.get_figheight()
+    figure_legend(fig, fig, rep, labels, loc="upper center", ncol=ncol,
+                  anchor=(0.5, 1.0 - TITLE_IN / height))
+    return 1.0 - (TITLE_IN + legend_in) / height
+
+
 def plot_metrics(plt, saver, rep, key):
     cells = rep.worlds[key]
     ds = sorted(cells)
     metrics = rep.metric_names()
     panels = ["success_rate"] + metrics
     ncol = 4
-    spare_slot = len(panels) % ncol != 0  # else the legend goes on top instead of a new row
+    labels_present = [l for l in rep.labels if any(rep.planner(c, l) for c in cells.values())]
+    # The legend takes a spare panel when there is one and one column of it fits there; else
+    # it goes on top.
+    spare_slot = len(panels) % ncol != 0 and len(labels_present) * LEGEND_ROW_IN <= 2.4
     nrow = math.ceil(len(panels) / ncol)
-    fig, axes = plt.subplots(nrow, ncol, figsize=(3.5 * ncol, 2.6 * nrow + (0.9 if spare_slot else 1.3)),
+    fig, axes = plt.subplots(nrow, ncol, figsize=(3.5 * ncol, 2.6 * nrow + (0.9 if spare_slot else 0.6)),
                              squeeze=False)
     flat = [a for row in axes for a in row]
-    labels_present = [l for l in rep.labels if any(rep.planner(c, l) for c in cells.values())]
     for ax, name in zip(flat, panels):
         allv = []
         for label in labels_present:
@@ -320,9 +341,7 @@ def plot_metrics(plt, saver, rep, key):
     if spare_slot:
         figure_legend(fig, flat[len(panels)], rep, labels_present, loc="center", ncol=1)
     else:
-        top = 1.0 - 0.8 / fig.get_figheight()
-        figure_legend(fig, fig, rep, labels_present, loc="upper center",
-                      anchor=(0.5, 1.0 - 0.4 / fig.get_figheight()))
+        top = top_legend(fig, rep, labels_present)
     maps = max((c.get("maps", 0) for c in cells.values()), default=0)
     fig.suptitle(f"{rep.world_title(key)}: mean per metric vs obstacle density "
                  f"(successful runs; band = 95% CI of the mean; {maps} maps per density)",
@@ -430,7 +449,7 @@ def plot_paired(plt, saver, rep, key):
 
 def plot_success(plt, saver, rep):
     gens, sizes = rep.generators, rep.sizes
-    fig, axes = plt.subplots(len(gens), len(sizes), figsize=(3.3 * len(sizes) + 0.4, 2.5 * len(gens) + 1.0),
+    fig, axes = plt.subplots(len(gens), len(sizes), figsize=(3.3 * len(sizes) + 0.4, 2.5 * len(gens) + 0.5),
                              squeeze=False, sharey=True)
     ymin = 100.0
     for gi, g in enumerate(gens):
@@ -463,10 +482,10 @@ def plot_success(plt, saver, rep):
     for row in axes:
         for ax in row:
             ax.set_ylim(max(0, math.floor((ymin - 3) / 10) * 10), 101.5)
-    figure_legend(fig, fig, rep, rep.labels, loc="upper center", anchor=(0.5, 0.95))
+    top = top_legend(fig, rep, rep.labels)
     fig.suptitle("success rate vs obstacle density (bars: Wilson 95% interval)",
                  fontsize=11, fontweight="bold")
-    fig.tight_layout(rect=(0, 0, 1, 0.9))
+    fig.tight_layout(rect=(0, 0, 1, top))
     saver.save(fig, "success.png")
 
 
@@ -476,7 +495,7 @@ def plot_time(plt, saver, rep):
     if not have:
         return
     gens, ds = rep.generators, rep.densities
-    fig, axes = plt.subplots(len(gens), len(ds), figsize=(3.0 * len(ds) + 0.5, 2.6 * len(gens) + 1.0),
+    fig, axes = plt.subplots(len(gens), len(ds), figsize=(3.0 * len(ds) + 0.5, 2.6 * len(gens) + 0.5),
                              squeeze=False, sharex=True, sharey=True)
     xticks = [w * h for (w, h) in rep.sizes]
     for gi, g in enumerate(gens):
@@ -507,11 +526,11 @@ def plot_time(plt, saver, rep):
             ax.xaxis.set_major_locator(FixedLocator(xticks))
             ax.xaxis.set_minor_locator(NullLocator())
             ax.set_xticklabels([f"{w}\u00b2" if w == h else f"{w}\u00d7{h}" for (w, h) in rep.sizes])
-    figure_legend(fig, fig, rep, rep.labels, loc="upper center", anchor=(0.5, 0.95))
+    top = top_legend(fig, rep, rep.labels)
     fig.suptitle("planning time vs grid size (log-log): median, band p5\u2013p95 "
                  f"[{rep.doc.get('environment', {}).get('cpu_model', 'unknown CPU')}]",
                  fontsize=11, fontweight="bold")
-    fig.tight_layout(rect=(0, 0, 1, 0.9))
+    fig.tight_layout(rect=(0, 0, 1, top))
     saver.save(fig, "plan_time.png")
 
 

@@ -157,13 +157,40 @@ TEST(Isolation, ThrowIsACrashEvenWithoutIsolation) {
 }
 
 TEST(Isolation, IsolatedReportEqualsInProcessReport) {
+  // With a scoped planner: the worker reads the scope back from the config as run.
   const SweepConfig config = parse_config(
-      {{"sizes", {20}}, {"densities", {0.1, 0.3}}, {"maps_per_cell", 6}, {"planners", {"astar", "dijkstra"}}});
+      {{"sizes", {20}},
+       {"densities", {0.1, 0.3}},
+       {"maps_per_cell", 6},
+       {"planners",
+        {"astar", "dijkstra", {{"name", "ma_star"}, {"only", {{"densities", {0.3}}, {"maps_per_cell", 4}}}}}}});
   const auto a = deterministic_part(build_report(config, run_sweep(config, isolated(10.0))));
   SweepOptions o;
   o.threads = 2;
   const auto b = deterministic_part(build_report(config, run_sweep(config, o)));
   EXPECT_EQ(a.dump(), b.dump());
+}
+
+// A worker that cannot take the sweep is a failed sweep with the worker's reason, not a run
+// recorded as a crash on every map.
+TEST(Isolation, WorkerThatCannotStartFailsTheSweep) {
+  const SweepConfig config = faulty_config({});
+  auto message = [&](std::vector<std::string> command) {
+    SweepOptions o = isolated(10.0);
+    o.isolation.command = std::move(command);
+    try {
+      run_sweep(config, o);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message({"/bin/false"}).find("isolation worker failed to start: worker exited with code 1"),
+            std::string::npos);
+  const std::string refused =
+      message({"/bin/sh", "-c", "read config; echo '{\"fatal\": \"planners[1]: refused\"}'"});
+  EXPECT_NE(refused.find("isolation worker failed to start: planners[1]: refused"), std::string::npos)
+      << refused;
 }
 
 }  // namespace

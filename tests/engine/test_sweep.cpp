@@ -17,12 +17,19 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// The default config at reduced size: every generator and planner, fewer and smaller maps.
+constexpr int kReducedMaps = 6;
+constexpr int kReducedScopedMaps = 2;
+
+// The default config at reduced size: every generator and planner, fewer and smaller maps; the
+// scoped planners (fusion) keep their scope's shape: the smaller size, the first maps.
 SweepConfig reduced_default() {
   std::ifstream in(std::string(AGV_SOURCE_DIR) + "/configs/default.json");
   json j = json::parse(in);
   j["sizes"] = json::array({24, 40});
-  j["maps_per_cell"] = 6;
+  j["maps_per_cell"] = kReducedMaps;
+  for (auto& p : j["planners"])
+    if (p.is_object() && p.contains("only"))
+      p["only"] = {{"sizes", {24}}, {"maps_per_cell", kReducedScopedMaps}};
   return parse_config(j);
 }
 
@@ -40,10 +47,25 @@ TEST(Sweep, ReportIsIdenticalOnOneAndTwoThreads) {
   const std::string one = deterministic_text(config, 1, "");
   const std::string two = deterministic_text(config, 2, "");
   EXPECT_EQ(one, two);
-  // And the sweep did real work: every planner ran on every map.
+  // And the sweep did real work: every planner ran on every map of its scope, and a scoped
+  // planner has no entry in the cells outside it.
   const json report = json::parse(one);
-  for (const auto& cell : report["cells"])
-    for (const auto& p : cell["planners"]) EXPECT_EQ(p["runs"], 6) << cell["cell"];
+  std::size_t scoped = 0;
+  for (const auto& p : config.planners) scoped += p.only.everywhere() ? 0 : 1;
+  ASSERT_GT(scoped, 0U) << "the default config runs the fusion planners on a scope";
+  for (const auto& cell : report["cells"]) {
+    const bool small = cell["width"] == 24;
+    EXPECT_EQ(cell["planners"].size(), config.planners.size() - (small ? 0 : scoped));
+    EXPECT_EQ(cell["paired"].size(), cell["planners"].size() - 1);
+    for (const auto& p : cell["planners"]) {
+      bool is_scoped = false;
+      for (const auto& e : config.planners) is_scoped = is_scoped || (e.label == p["planner"] && !e.only.everywhere());
+      EXPECT_EQ(p["runs"], is_scoped ? kReducedScopedMaps : kReducedMaps) << cell["cell"] << p["planner"];
+    }
+  }
+  EXPECT_EQ(report["coverage"]["runs_expected"], scheduled_runs(config, plan_sweep(config)));
+  EXPECT_EQ(report["coverage"]["runs_present"], report["coverage"]["runs_expected"]);
+  EXPECT_TRUE(report["complete"].get<bool>());
 }
 
 TEST(Sweep, RecordsOnePerRunWithReplayFields) {
@@ -63,11 +85,20 @@ TEST(Sweep, RecordsOnePerRunWithReplayFields) {
     ids.insert(rec["task_id"].get<std::string>());
     ++n;
   }
-  const auto expected =
-      static_cast<std::size_t>(plan_sweep(config).map_tasks()) * config.planners.size();
+  const auto expected = static_cast<std::size_t>(scheduled_runs(config, plan_sweep(config)));
   EXPECT_EQ(n, expected);
   EXPECT_EQ(ids.size(), expected) << "task ids must be unique";
   fs::remove(runs);
+}
+
+// The config as run is what isolation workers and merges parse: it must read back as itself.
+TEST(Config, ConfigAsRunReadsBackToTheSameConfig) {
+  const SweepConfig config = reduced_default();
+  const SweepConfig again = parse_config(config_as_run(config));
+  EXPECT_EQ(config_as_run(again).dump(), config_as_run(config).dump());
+  EXPECT_EQ(config_hash(again), config_hash(config));
+  for (std::size_t p = 0; p < config.planners.size(); ++p)
+    EXPECT_EQ(again.planners[p].only.everywhere(), config.planners[p].only.everywhere());
 }
 
 TEST(Sweep, DifferentSeedsGiveDifferentMaps) {
@@ -123,6 +154,67 @@ TEST(Config, ErrorsNameTheField) {
   j = base;
   j["sizes"] = {1};
   EXPECT_NE(message(j).find("sizes[0]"), std::string::npos);
+}
+
+TEST(Config, ScopeErrorsNameTheField) {
+  auto message = [](const json& j) {
+    try {
+      parse_config(j);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const json base = {{"sizes", {16, 32}},
+                     {"densities", {0.1, 0.2}},
+                     {"maps_per_cell", 10},
+                     {"planners", {"astar", {{"name", "rrt"}, {"only", {{"sizes", {16}}}}}}}};
+  EXPECT_EQ(message(base), "no error");
+  json j = base;
+  j["planners"][1]["only"] = {{"sizes", {20}}};
+  EXPECT_NE(message(j).find("planners[1].only.sizes[0]: not one of the sweep's sizes"),
+            std::string::npos) << message(j);
+  j["planners"][1]["only"] = {{"densities", {0.1, 0.3}}};
+  EXPECT_NE(message(j).find("planners[1].only.densities[1]"), std::string::npos);
+  j["planners"][1]["only"] = {{"generators", {"maze"}}};
+  EXPECT_NE(message(j).find("planners[1].only.generators[0]"), std::string::npos);
+  j["planners"][1]["only"] = {{"maps_per_cell", 11}};
+  EXPECT_NE(message(j).find("planners[1].only.maps_per_cell"), std::string::npos);
+  j["planners"][1]["only"] = {{"maps", 3}};
+  EXPECT_NE(message(j).find("planners[1].only.maps: unknown field"), std::string::npos);
+  j = base;
+  j["baseline"] = "rrt";
+  EXPECT_NE(message(j).find("baseline: \"rrt\" has an \"only\" scope"), std::string::npos);
+}
+
+TEST(Sweep, ScopedPlannerRunsOnlyOnItsCellsAndMapsAndIsPairedThere) {
+  const json j = {{"seed", 3},
+                  {"generators", {"uniform", "rooms"}},
+                  {"sizes", {16, 24}},
+                  {"densities", {0.1, 0.2}},
+                  {"maps_per_cell", 5},
+                  {"planners",
+                   {"astar",
+                    {{"name", "dijkstra"},
+                     {"only", {{"generators", {"rooms"}}, {"densities", {0.2}}, {"maps_per_cell", 3}}}}}}};
+  const SweepConfig config = parse_config(j);
+  const SweepPlan plan = plan_sweep(config);
+  EXPECT_EQ(scheduled_runs(config, plan), 8 * 5 + 2 * 3);
+  const json report = build_report(config, run_sweep(config, {}));
+  for (const auto& cell : report["cells"]) {
+    const bool in_scope = cell["generator"] == "rooms" && cell["density"] == 0.2;
+    ASSERT_EQ(cell["planners"].size(), in_scope ? 2U : 1U) << cell["cell"];
+    ASSERT_EQ(cell["paired"].size(), in_scope ? 1U : 0U) << cell["cell"];
+    if (!in_scope) continue;
+    EXPECT_EQ(cell["planners"][1]["runs"], 3);
+    // Dijkstra is optimal like A*: three pairs, each a tie on length.
+    EXPECT_EQ(cell["paired"][0]["metrics"]["path_length"]["pairs"], 3);
+    EXPECT_EQ(cell["paired"][0]["metrics"]["path_length"]["ties"], 3);
+  }
+  EXPECT_EQ(report["coverage"]["runs_expected"], 46);
+  EXPECT_EQ(report["coverage"]["runs_present"], 46);
+  EXPECT_EQ(report["config"]["planners"][1]["only"]["maps_per_cell"], 3);
+  EXPECT_FALSE(report["config"]["planners"][0].contains("only"));
 }
 
 TEST(Config, ShippedConfigsParse) {

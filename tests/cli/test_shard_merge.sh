@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# Sharding and merge (issue 8), with a scoped planner in the sweep (issue 5's "only"): shards
+# 0..3 of 4 merged equal the unsharded report (non-timing fields); a missing shard is reported
+# as incomplete coverage (exit 1), never silently averaged; one shard's journal resumed without
+# --shard completes the sweep to the same report; a journal record for a run outside its
+# planner's scope is refused (exit 2). Usage: test_shard_merge.sh AGVBENCH SOURCE_DIR
+set -u
+bin=$1
+src=$2
+py=/usr/bin/python3
+same=$src/slurm/same_report.py
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+pass=0
+fail=0
+ok() { echo "ok   $1"; pass=$((pass + 1)); }
+bad() { echo "FAIL $1"; fail=$((fail + 1)); }
+
+cat >config.json <<'JSON'
+{"name": "shard-test", "seed": 5, "generators": ["uniform", "maze"], "sizes": [24, 40],
+ "densities": [0.1, 0.3], "maps_per_cell": 30,
+ "planners": ["astar", "ma_star",
+              {"name": "rrt", "only": {"sizes": [24], "densities": [0.1], "maps_per_cell": 12}}],
+ "report": "unused.json"}
+JSON
+# 8 cells x 30 maps x 2 planners, and rrt on 2 cells x 12 maps.
+expected=$((8 * 30 * 2 + 2 * 12))
+
+"$bin" run config.json --threads 2 --out full.json --quiet || { bad "unsharded run"; exit 1; }
+runs=$($py -c 'import json,sys; c=json.load(open("full.json"))["coverage"]; print(c["runs_expected"], c["runs_present"])')
+[ "$runs" = "$expected $expected" ] && ok "unsharded coverage $runs" || bad "unsharded coverage: $runs, want $expected"
+
+for i in 0 1 2 3; do
+  "$bin" run config.json --threads 2 --shard "$i/4" --out "shard_$i.json" --runs-out "shard_$i.jsonl" \
+    --quiet || bad "shard $i/4 exit $?"
+done
+lines=$(cat shard_*.jsonl | wc -l)
+[ "$lines" -eq "$expected" ] && ok "4 shards wrote $lines records" || bad "4 shards wrote $lines records, want $expected"
+
+"$bin" merge shard_0.jsonl shard_1.jsonl shard_2.jsonl shard_3.jsonl --config config.json \
+  --out merged.json >merge.log
+code=$?
+[ $code -eq 0 ] && ok "merge of 4 shards exits 0" || bad "merge of 4 shards exits $code: $(cat merge.log)"
+$py "$same" full.json merged.json >/dev/null && ok "merged report equals the unsharded one" ||
+  bad "merged report differs: $($py "$same" full.json merged.json)"
+
+"$bin" merge shard_0.jsonl shard_1.jsonl shard_3.jsonl --config config.json --out partial.json \
+  >partial.log
+code=$?
+[ $code -eq 1 ] && ok "merge without shard 2 exits 1" || bad "merge without shard 2 exits $code"
+grep -q INCOMPLETE partial.log && ok "merge says INCOMPLETE" || bad "merge does not say INCOMPLETE: $(cat partial.log)"
+present=$(wc -l <shard_2.jsonl)
+$py - "$expected" "$present" <<'EOF_PY' && ok "partial report: complete=false, coverage counts the missing shard" || bad "partial report coverage"
+import json, sys
+expected, missing = int(sys.argv[1]), int(sys.argv[2])
+r = json.load(open("partial.json"))
+c = r["coverage"]
+# Map tasks t with t % 4 == 2: 240 map tasks in all, a quarter of them.
+ok = (r["complete"] is False and c["runs_expected"] == expected and
+      c["runs_present"] == expected - missing and c["maps_missing"] == 240 // 4)
+print(c, r["complete"])
+sys.exit(0 if ok else 1)
+EOF_PY
+
+cp shard_1.jsonl resumed.jsonl
+"$bin" run config.json --threads 2 --resume resumed.jsonl --out resumed.json --quiet
+code=$?
+[ $code -eq 0 ] && ok "resume from one shard's journal exits 0" || bad "resume exits $code"
+$py "$same" full.json resumed.json >/dev/null && ok "resumed report equals the unsharded one" ||
+  bad "resumed report differs: $($py "$same" full.json resumed.json)"
+lines=$(wc -l <resumed.jsonl)
+[ "$lines" -eq "$expected" ] && ok "resumed journal has each run once ($lines)" || bad "resumed journal has $lines records, want $expected"
+
+# An astar record relabelled as rrt on a map outside rrt's scope (size 40).
+grep -m1 '"planner":"astar".*"cell":"uniform/40x40/0.3"\|"cell":"uniform/40x40/0.3".*"planner":"astar"' shard_0.jsonl |
+  sed 's/"planner":"astar"/"planner":"rrt"/' >foreign.jsonl
+if [ -s foreign.jsonl ]; then
+  "$bin" merge foreign.jsonl --config config.json --out foreign.json 2>err.txt >/dev/null
+  code=$?
+  { [ $code -eq 2 ] && grep -q 'not scheduled on this map' err.txt && [ ! -e foreign.json ]; } &&
+    ok "out-of-scope record refused (exit 2, no report)" || bad "out-of-scope record: exit $code, $(cat err.txt)"
+else
+  bad "no astar record of uniform/40x40/0.3 in shard 0 to relabel"
+fi
+
+echo "test_shard_merge: $pass passed, $fail failed"
+[ $fail -eq 0 ]

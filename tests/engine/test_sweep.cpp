@@ -20,16 +20,23 @@ using nlohmann::json;
 constexpr int kReducedMaps = 6;
 constexpr int kReducedScopedMaps = 2;
 
-// The default config at reduced size: every generator and planner, fewer and smaller maps; the
-// scoped planners (fusion) keep their scope's shape: the smaller size, the first maps.
-SweepConfig reduced_default() {
+// The default config at reduced size: every generator and planner (or the first `keep` of
+// them and its first scoped one), fewer and smaller maps; the scoped planners (fusion) keep
+// their scope's shape: the smaller size, the first maps.
+SweepConfig reduced_default(std::size_t keep = 1000) {
   std::ifstream in(std::string(AGV_SOURCE_DIR) + "/configs/default.json");
   json j = json::parse(in);
   j["sizes"] = json::array({24, 40});
   j["maps_per_cell"] = kReducedMaps;
-  for (auto& p : j["planners"])
-    if (p.is_object() && p.contains("only"))
-      p["only"] = {{"sizes", {24}}, {"maps_per_cell", kReducedScopedMaps}};
+  json planners = json::array();
+  bool scoped_kept = false;
+  for (auto p : j["planners"]) {
+    const bool scoped = p.is_object() && p.contains("only");
+    if (scoped) p["only"] = {{"sizes", {24}}, {"maps_per_cell", kReducedScopedMaps}};
+    if (planners.size() < keep || (scoped && !scoped_kept)) planners.push_back(p);
+    scoped_kept = scoped_kept || scoped;
+  }
+  j["planners"] = planners;
   return parse_config(j);
 }
 
@@ -69,7 +76,7 @@ TEST(Sweep, ReportIsIdenticalOnOneAndTwoThreads) {
 }
 
 TEST(Sweep, RecordsOnePerRunWithReplayFields) {
-  const SweepConfig config = reduced_default();
+  const SweepConfig config = reduced_default(3);
   const fs::path runs =
       fs::temp_directory_path() / ("agv_test_runs_" + std::to_string(::getpid()) + ".jsonl");
   deterministic_text(config, 2, runs.string());
@@ -86,6 +93,11 @@ TEST(Sweep, RecordsOnePerRunWithReplayFields) {
     ++n;
   }
   const auto expected = static_cast<std::size_t>(scheduled_runs(config, plan_sweep(config)));
+  // Three planners on every map, the scoped one on the 24x24 cells' first maps (half the cells).
+  const SweepPlan plan = plan_sweep(config);
+  ASSERT_EQ(config.planners.size(), 4U);
+  EXPECT_EQ(expected, static_cast<std::size_t>(3 * plan.map_tasks()) +
+                          plan.cells.size() / 2 * kReducedScopedMaps);
   EXPECT_EQ(n, expected);
   EXPECT_EQ(ids.size(), expected) << "task ids must be unique";
   fs::remove(runs);
@@ -102,7 +114,7 @@ TEST(Config, ConfigAsRunReadsBackToTheSameConfig) {
 }
 
 TEST(Sweep, DifferentSeedsGiveDifferentMaps) {
-  SweepConfig a = reduced_default();
+  SweepConfig a = reduced_default(1);
   SweepConfig b = a;
   b.seed = a.seed + 1;
   const json ra = deterministic_part(build_report(a, run_sweep(a, {})));

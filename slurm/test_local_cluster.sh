@@ -142,6 +142,9 @@ EOF
 slurmctld -D -i -f "$SLURM_CONF" >"$tmp/log/slurmctld.out" 2>&1 &
 pids+=($!)
 wait_for 30 "slurmctld" sh -c "scontrol ping | grep -q UP"
+# slurmd (22.05) initialises its cgroup plugin even with the cgroup-free settings above.
+mountpoint -q /sys/fs/cgroup ||
+  die "slurmd needs a cgroup filesystem on /sys/fs/cgroup, and none is mounted here (a chroot without /sys mounted recursively?)"
 slurmd -D -f "$SLURM_CONF" -N "$host" >"$tmp/log/slurmd.out" 2>&1 &
 pids+=($!)
 wait_for 60 "node $host idle" sh -c "sinfo -h -n '$host' -o %T | grep -qx idle"

@@ -17,6 +17,7 @@
 #include "algos/registry.h"
 #include "algos/rrt_tree.h"
 #include "generators/map_generators.h"
+#include "perf/bench_maps.h"
 
 namespace agv {
 namespace {
@@ -29,17 +30,8 @@ struct Case {
 };
 
 Case uniform_case(int side, double density) {
-  MapSpec spec;
-  spec.generator = "uniform";
-  spec.width = side;
-  spec.height = side;
-  spec.density = density;
-  spec.endpoints = EndpointMode::corners;
-  spec.require_solvable = true;
-  spec.solvable_rule = CornerRule::no_corner_cut;
-  char name[64];
-  std::snprintf(name, sizeof name, "uniform%d_d%.1f", side, density);
-  Case c{name, {}};
+  const MapSpec spec = bench_uniform_spec(side, density, CornerRule::no_corner_cut);
+  Case c{bench_uniform_name(side, density), {}};
   for (int i = 0; i < kMapsPerCase; ++i) {
     Rng rng(2025, static_cast<std::uint64_t>(density * 10) * 1000 + static_cast<std::uint64_t>(i));
     c.maps.push_back(make_map(spec, rng));

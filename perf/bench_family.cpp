@@ -18,6 +18,7 @@
 #include "algos/path_simplify.h"
 #include "algos/registry.h"
 #include "generators/map_generators.h"
+#include "perf/bench_maps.h"
 
 namespace agv {
 namespace {
@@ -31,18 +32,9 @@ struct Case {
 };
 
 Case uniform_case(int side, double density) {
-  MapSpec spec;
-  spec.generator = "uniform";
-  spec.width = side;
-  spec.height = side;
-  spec.density = density;
-  spec.endpoints = EndpointMode::corners;
-  spec.require_solvable = true;
-  spec.solvable_rule = CornerRule::no_corner_cut;
+  MapSpec spec = bench_uniform_spec(side, density, CornerRule::no_corner_cut);
   spec.max_attempts = 100000;
-  char name[64];
-  std::snprintf(name, sizeof name, "uniform%d_d%.1f", side, density);
-  Case c{name, {}, {}};
+  Case c{bench_uniform_name(side, density), {}, {}};
   const auto astar = configure_planner("astar", {{"corner_rule", "no_corner_cut"}}, "bench");
   Scratch scratch;
   for (int i = 0; i < kMapsPerCase; ++i) {

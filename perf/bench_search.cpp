@@ -14,6 +14,7 @@
 #include "algos/registry.h"
 #include "generators/map_generators.h"
 #include "generators/movingai.h"
+#include "perf/bench_maps.h"
 
 namespace agv {
 namespace {
@@ -33,19 +34,9 @@ struct Case {
 constexpr std::size_t kQueriesPerMap = 100;
 
 Case uniform_case(int side, double density) {
-  MapSpec spec;
-  spec.generator = "uniform";
-  spec.width = side;
-  spec.height = side;
-  spec.density = density;
-  spec.endpoints = EndpointMode::corners;
-  spec.require_solvable = true;
-  spec.solvable_rule = CornerRule::allow;
   Rng rng(2024, static_cast<std::uint64_t>(side) * 100 + static_cast<std::uint64_t>(density * 10));
-  MapInstance map = make_map(spec, rng);
-  char name[64];
-  std::snprintf(name, sizeof name, "uniform%d_d%.1f", side, density);
-  return {name, "allow", std::move(map.grid), {{map.start, map.goal}}};
+  MapInstance map = make_map(bench_uniform_spec(side, density, CornerRule::allow), rng);
+  return {bench_uniform_name(side, density), "allow", std::move(map.grid), {{map.start, map.goal}}};
 }
 
 // Every k-th scenario in file order (files list buckets in increasing order), so the subset

@@ -10,5 +10,6 @@ done
 echo "apt_need: installing ${missing[*]}" >&2
 if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
 export DEBIAN_FRONTEND=noninteractive
-"${sudo[@]}" apt-get update -qq
-"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+retry=(-o Acquire::Retries=3)  # a dropped connection to the mirror should not fail a CI run
+"${sudo[@]}" apt-get "${retry[@]}" update -qq
+"${sudo[@]}" apt-get "${retry[@]}" install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -43,7 +43,8 @@ tsan_tbb() {
     echo "deb-src [signed-by=$keyring] http://deb.debian.org/debian-security $codename-security main"
   } >"$dir/apt/sources.list"
   local opts=(-o "Dir::Etc::SourceList=$dir/apt/sources.list" -o "Dir::Etc::SourceParts=$dir/apt/none"
-    -o "Dir::State::Lists=$dir/apt/lists" -o "Dir::Cache=$dir/apt/cache" -o "APT::Sandbox::User=root")
+    -o "Dir::State::Lists=$dir/apt/lists" -o "Dir::Cache=$dir/apt/cache" -o "APT::Sandbox::User=root"
+    -o Acquire::Retries=3)
   apt-get "${opts[@]}" update -qq
   (cd "$dir" && apt-get "${opts[@]}" source -qq --download-only "$src=$ver" &&
     dpkg-source -x ./*.dsc src >/dev/null 2>&1)

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "algos/grid_search_params.h"
+#include "algos/postprocess_params.h"
 #include "algos/heuristics.h"
 #include "algos/search_core.h"
 
@@ -12,15 +13,21 @@ namespace {
 
 class DijkstraPlanner final : public Planner {
  public:
-  explicit DijkstraPlanner(const Params& params) : setup_(grid_search_setup_of(params)) {}
+  explicit DijkstraPlanner(const Params& params) : setup_(grid_search_setup_of(params)) {
+    read_shortcut_params(params, post_);
+    read_smoothing_params(params, post_);
+  }
 
   PlanResult plan(const PlanRequest& request) const override {
-    return plan_grid_search(request, setup_,
-                            AStarPolicy<ZeroHeuristic>(ZeroHeuristic{}, request.goal));
+    PlanResult result = plan_grid_search(request, setup_,
+                                         AStarPolicy<ZeroHeuristic>(ZeroHeuristic{}, request.goal));
+    apply_postprocessing(request.grid, post_, result);
+    return result;
   }
 
  private:
   GridSearchSetup setup_;
+  PostprocessOptions post_;
 };
 
 }  // namespace
@@ -33,6 +40,8 @@ PlannerInfo dijkstra_planner() {
   info.expanded_nodes_meaning =
       "cells taken off the open list and closed (goal included; stale duplicates not counted)";
   info.params = {corner_rule_param(CornerRule::allow), diagonal_cost_param()};
+  for (auto& spec : shortcut_params(ShortcutMode::none)) info.params.push_back(std::move(spec));
+  for (auto& spec : smoothing_params(SmoothingMode::none)) info.params.push_back(std::move(spec));
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return std::make_unique<DijkstraPlanner>(params);
   };

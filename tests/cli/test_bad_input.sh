@@ -5,11 +5,7 @@
 set -u
 bin=$1
 maps=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-pass=0
-fail=0
+source "$(dirname "$0")/lib.sh"
 
 good_config() {  # a small valid config; $1 = report path
   cat <<JSON
@@ -78,5 +74,4 @@ printf 'version 1\n0\tok.map\t3\t3\t0\t0\tx\t1\t1.4\n' >garbled.scen
 expect "scen: malformed line" 'garbled.scen:2' "$bin" scen ok.map garbled.scen
 expect "CLI: bad option value" 'threads' "$bin" run --threads -4
 
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish test_bad_input

@@ -4,22 +4,15 @@ set -u
 bin=$1
 src=$2
 maps=$3
-py=/usr/bin/python3
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-pass=0
-fail=0
+source "$(dirname "$0")/lib.sh"
 check() {  # NAME COMMAND...
   local name=$1
   shift
   if "$@" >out.txt 2>err.txt; then
-    echo "ok   $name"
-    pass=$((pass + 1))
+    ok "$name"
   else
-    echo "FAIL $name (exit $?)"
+    bad "$name (exit $?)"
     cat out.txt err.txt | tail -20
-    fail=$((fail + 1))
   fi
 }
 
@@ -32,5 +25,4 @@ check "plan on a MovingAI map" sh -c "'$bin' plan --map '$maps/arena2.map' --sta
 check "scen: arena2 optimal under astar" sh -c "'$bin' scen '$maps/arena2.map' '$maps/arena2.map.scen' | grep -q ' 0 mismatches'"
 check "scen --json: dijkstra on arena2" sh -c "'$bin' scen '$maps/arena2.map' '$maps/arena2.map.scen' --planner dijkstra --json | $py -c 'import json,sys; r=json.load(sys.stdin); assert r[\"mismatches\"]==0 and r[\"queries\"]==910 and \"median_query_us\" in r[\"timing\"]'"
 check "run writes a report and a journal" sh -c "'$bin' run '$src/configs/quick.json' --out r.json --runs-out r.jsonl --quiet && $py -c 'import json; r=json.load(open(\"r.json\")); assert r[\"schema_version\"]==1 and r[\"complete\"]' && test -s r.jsonl"
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish test_commands

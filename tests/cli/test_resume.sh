@@ -6,14 +6,7 @@
 set -u
 bin=$1
 src=$2
-py=/usr/bin/python3
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-pass=0
-fail=0
-ok() { echo "ok   $1"; pass=$((pass + 1)); }
-bad() { echo "FAIL $1"; fail=$((fail + 1)); }
+source "$(dirname "$0")/lib.sh"
 
 cat >config.json <<'JSON'
 {"name": "resume-test", "seed": 11, "generators": ["uniform", "rooms"], "sizes": [48, 96],
@@ -107,5 +100,4 @@ for i in $(seq 1 $trials); do
 done
 [ $torn -eq 0 ] && ok "SIGKILL x$trials: the report always parses" || bad "SIGKILL: $torn torn reports"
 
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish test_resume

@@ -7,15 +7,8 @@
 set -u
 bin=$1
 src=$2
-py=/usr/bin/python3
 same=$src/slurm/same_report.py
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-pass=0
-fail=0
-ok() { echo "ok   $1"; pass=$((pass + 1)); }
-bad() { echo "FAIL $1"; fail=$((fail + 1)); }
+source "$(dirname "$0")/lib.sh"
 
 cat >config.json <<'JSON'
 {"name": "shard-test", "seed": 5, "generators": ["uniform", "maze"], "sizes": [24, 40],
@@ -84,5 +77,4 @@ else
   bad "no astar record of uniform/40x40/0.3 in shard 0 to relabel"
 fi
 
-echo "test_shard_merge: $pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish test_shard_merge

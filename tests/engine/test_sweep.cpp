@@ -137,15 +137,17 @@ TEST(Sweep, AtomicWriteLeavesNoTemporaryFile) {
   fs::remove_all(dir);
 }
 
+// parse_config's error message for j, or "no error".
+std::string message(const json& j) {
+  try {
+    parse_config(j);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
 TEST(Config, ErrorsNameTheField) {
-  auto message = [](const json& j) {
-    try {
-      parse_config(j);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   const json base = {{"planners", {"astar"}}, {"sizes", {16}}};
   EXPECT_EQ(message(base), "no error");
   json j = base;
@@ -169,14 +171,6 @@ TEST(Config, ErrorsNameTheField) {
 }
 
 TEST(Config, ScopeErrorsNameTheField) {
-  auto message = [](const json& j) {
-    try {
-      parse_config(j);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   const json base = {{"sizes", {16, 32}},
                      {"densities", {0.1, 0.2}},
                      {"maps_per_cell", 10},

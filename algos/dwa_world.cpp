@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "generators/cell_geometry.h"
 #include "generators/connectivity.h"
 #include "generators/corner_rule.h"
 #include "generators/distance_transform.h"
@@ -16,12 +17,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kContactTolerance = 1e-9;  // cells, in the robot's favour
 constexpr double kYieldGap = 1e-6;          // cells a yielding disc keeps from the robot
-
-double box_distance(Point p, Cell c) {
-  const double dx = std::max({c.x - p.x, 0.0, p.x - (c.x + 1.0)});
-  const double dy = std::max({c.y - p.y, 0.0, p.y - (c.y + 1.0)});
-  return std::sqrt(dx * dx + dy * dy);
-}
 
 // The cells a polyline passes through, in order, without repeats in a row (sampled every
 // 1/8 cell: the reference path is a chain of cell-centre moves, so no cell is skipped).
@@ -62,32 +57,6 @@ Point point_at(std::span<const Point> path, double f) {
 }
 
 }  // namespace
-
-double segment_box_distance(Point a, Point b, Cell c) {
-  // Liang-Barsky clip against the square: 0 when they meet.
-  double t0 = 0.0, t1 = 1.0;
-  auto clip = [&](double p0, double d, double lo, double hi) {
-    if (d == 0.0) return p0 >= lo && p0 <= hi;
-    double ta = (lo - p0) / d, tb = (hi - p0) / d;
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-    return t0 <= t1;
-  };
-  if (clip(a.x, b.x - a.x, c.x, c.x + 1.0) && clip(a.y, b.y - a.y, c.y, c.y + 1.0)) return 0.0;
-  auto point_segment = [&](Point q) {
-    const double ux = b.x - a.x, uy = b.y - a.y;
-    const double len2 = ux * ux + uy * uy;
-    double t = 0.0;
-    if (len2 > 0.0) t = std::clamp(((q.x - a.x) * ux + (q.y - a.y) * uy) / len2, 0.0, 1.0);
-    return std::hypot(q.x - (a.x + t * ux), q.y - (a.y + t * uy));
-  };
-  double d = std::min(box_distance(a, c), box_distance(b, c));
-  for (const Point q : {Point{1.0 * c.x, 1.0 * c.y}, Point{c.x + 1.0, 1.0 * c.y},
-                        Point{1.0 * c.x, c.y + 1.0}, Point{c.x + 1.0, c.y + 1.0}})
-    d = std::min(d, point_segment(q));
-  return d;
-}
 
 DwaWorld::DwaWorld(const Grid& grid, std::vector<Cell> unknown, std::vector<MovingDisc> moving)
     : grid_(&grid), unknown_(std::move(unknown)), moving_(std::move(moving)) {}
@@ -156,7 +125,7 @@ double DwaWorld::static_clearance(Point p) const {
 
 double DwaWorld::unknown_clearance(Point p) const {
   double d = kInf;
-  for (const Cell& c : unknown_) d = std::min(d, box_distance(p, c));
+  for (const Cell& c : unknown_) d = std::min(d, point_cell_distance(p, c));
   return d;
 }
 

@@ -41,9 +41,6 @@ struct WorldSpec {
   bool moving_yield = false;
 };
 
-// Exact distance between segment a-b and the closed square of cell c.
-double segment_box_distance(Point a, Point b, Cell c);
-
 class DwaWorld {
  public:
   // Explicit world (tests). The grid must outlive the world.

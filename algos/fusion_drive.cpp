@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "algos/unicycle.h"
+#include "generators/cell_geometry.h"
 #include "generators/distance_transform.h"
 
 namespace agv {
@@ -27,21 +28,11 @@ struct DriveScratch {
   Grid replan_grid;
 };
 
-double dist(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
-double point_segment(Point p, Point a, Point b) {
-  const double ux = b.x - a.x, uy = b.y - a.y;
-  const double len2 = ux * ux + uy * uy;
-  double t = 0.0;
-  if (len2 > 0.0) t = std::clamp(((p.x - a.x) * ux + (p.y - a.y) * uy) / len2, 0.0, 1.0);
-  return std::hypot(p.x - (a.x + t * ux), p.y - (a.y + t * uy));
-}
-
 // Does the polyline pos -> keys[from..] pass within `r` of unknown cell c's square?
 bool path_near_cell(Point pos, const std::vector<Point>& keys, std::size_t from, Cell c, double r) {
   Point a = pos;
   for (std::size_t i = from; i < keys.size(); ++i) {
-    if (segment_box_distance(a, keys[i], c) < r) return true;
+    if (segment_cell_distance(a, keys[i], c) < r) return true;
     a = keys[i];
   }
   return false;
@@ -64,13 +55,13 @@ double turn_speed_cap(const FusionOptions& o, const std::vector<Point>& keys, st
   double cap = turn_speed(
       std::abs(wrap_angle(std::atan2(aim.y - pos.y, aim.x - pos.x) - pose.theta)), 0.0, reach,
       o.dwa);
-  double distance = dist(pos, keys[key]);
+  double distance = point_distance(pos, keys[key]);
   for (std::size_t k = key; k + 1 < keys.size() && k < key + 3; ++k) {
     const double a = std::atan2(keys[k].y - keys[k - 1].y, keys[k].x - keys[k - 1].x);
     const double b = std::atan2(keys[k + 1].y - keys[k].y, keys[k + 1].x - keys[k].x);
     const double room = std::max(0.0, distance - o.waypoint_tolerance) * edge;
     cap = std::min(cap, turn_speed(std::abs(wrap_angle(b - a)), room, reach, o.dwa));
-    distance += dist(keys[k], keys[k + 1]);
+    distance += point_distance(keys[k], keys[k + 1]);
   }
   return cap;
 }
@@ -91,7 +82,7 @@ std::vector<Point> fusion_key_points(std::span<const Point> path, double toleran
     double far = -1.0;
     std::size_t at = a;
     for (std::size_t i = a + 1; i < b; ++i) {
-      const double d = point_segment(path[i], path[a], path[b]);
+      const double d = point_segment_distance(path[i], path[a], path[b]);
       if (d > far) {
         far = d;
         at = i;
@@ -153,7 +144,7 @@ DriveResult drive(const FusionOptions& o, const PlanRequest& req, DwaWorld& worl
   std::string end;
   while (true) {
     const Point pos = position(pose);
-    if (dist(pos, goal) <= o.goal_tolerance) {
+    if (point_distance(pos, goal) <= o.goal_tolerance) {
       end = "reached";
       break;
     }
@@ -161,7 +152,7 @@ DriveResult drive(const FusionOptions& o, const PlanRequest& req, DwaWorld& worl
     bool replan = false;
     for (std::size_t j = 0; j < fs.seen.size(); ++j) {
       const Cell c = world.unknown_cells()[j];
-      if (fs.seen[j] || dist(pos, centre(c)) > o.sensor_range) continue;
+      if (fs.seen[j] || point_distance(pos, centre(c)) > o.sensor_range) continue;
       fs.seen[j] = 1;
       fs.seen_cells.push_back(c);
       replan = replan || (global != nullptr && o.replan && path_near_cell(pos, keys, key, c, keep_out));
@@ -187,14 +178,14 @@ DriveResult drive(const FusionOptions& o, const PlanRequest& req, DwaWorld& worl
     while (key + 1 < keys.size()) {
       const Point k = keys[key];
       double clear = kInf;
-      for (const Cell& c : fs.seen_cells) clear = std::min(clear, segment_box_distance(k, k, c));
+      for (const Cell& c : fs.seen_cells) clear = std::min(clear, point_cell_distance(k, c));
       if (clear >= keep_out && !passes_goal(pos, keys[key - 1], k, passing)) break;
       ++key;
     }
     fs.visible.clear();
     for (std::size_t j = 0; j < world.moving().size(); ++j) {
       const MovingDisc& m = world.moving()[j];
-      const bool seen = dist(pos, m.centre) - m.radius <= o.sensor_range;
+      const bool seen = point_distance(pos, m.centre) - m.radius <= o.sensor_range;
       Point velocity;  // observed: the displacement since the previous control step
       if (seen && o.predict_moving && fs.was_seen[j])
         velocity = {(m.centre.x - fs.last_seen[j].x) / dp.dt,
@@ -209,10 +200,10 @@ DriveResult drive(const FusionOptions& o, const PlanRequest& req, DwaWorld& worl
     DwaTarget target;
     // Only key points a rollout can reach within the horizon (at most v_max T along the path).
     std::size_t reach = 1;
-    for (double along = dist(pos, keys[key]); key + reach < keys.size() && reach < kLookaheadGoals;
+    for (double along = point_distance(pos, keys[key]); key + reach < keys.size() && reach < kLookaheadGoals;
          ++reach) {
       if (along > horizon_cells) break;
-      along += dist(keys[key + reach - 1], keys[key + reach]);
+      along += point_distance(keys[key + reach - 1], keys[key + reach]);
     }
     target.goals = std::span<const Point>(keys.data() + key, reach);
     target.passing = passing;
@@ -244,13 +235,13 @@ DriveResult drive(const FusionOptions& o, const PlanRequest& req, DwaWorld& worl
     }
     // Stuck: no admissible velocity that moves the robot, or one the DWA does not take (the
     // classic local minimum: every forward rollout ends at an obstacle, standing scores best).
-    const bool moved = d.any_moving && dist(position(pose), pos) >= kStandStill;
+    const bool moved = d.any_moving && point_distance(position(pose), pos) >= kStandStill;
     stuck = moved ? 0 : stuck + 1;
     if (stuck >= o.stuck_steps) {
       end = "stuck";
       break;
     }
-    if (out.steps >= max_steps && dist(position(pose), goal) > o.goal_tolerance) {
+    if (out.steps >= max_steps && point_distance(position(pose), goal) > o.goal_tolerance) {
       end = "timeout";
       break;
     }

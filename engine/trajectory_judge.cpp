@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "algos/unicycle.h"
+#include "generators/cell_geometry.h"
 #include "generators/distance_transform.h"
 
 namespace agv {
@@ -17,44 +18,6 @@ constexpr double kContactTolerance = 1e-12;  // cells
 constexpr double kStartTolerance = 1e-9;     // cells
 constexpr double kPositionTolerance = 1e-6;  // cells, kinematic replay
 constexpr double kHeadingTolerance = 1e-9;   // rad
-
-double dist(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
-double point_segment(Point c, Point a, Point b) {
-  const double ux = b.x - a.x, uy = b.y - a.y;
-  const double len2 = ux * ux + uy * uy;
-  double t = 0.0;
-  if (len2 > 0.0) t = std::clamp(((c.x - a.x) * ux + (c.y - a.y) * uy) / len2, 0.0, 1.0);
-  return std::hypot(c.x - (a.x + t * ux), c.y - (a.y + t * uy));
-}
-
-double point_box(Point p, Cell c) {
-  const double dx = std::max({c.x - p.x, 0.0, p.x - (c.x + 1.0)});
-  const double dy = std::max({c.y - p.y, 0.0, p.y - (c.y + 1.0)});
-  return std::hypot(dx, dy);
-}
-
-// Liang-Barsky: does segment a-b meet [lo, hi] on one axis, narrowing [t0, t1]?
-bool clip(double p, double d, double lo, double hi, double& t0, double& t1) {
-  if (d == 0.0) return p >= lo && p <= hi;
-  double ta = (lo - p) / d, tb = (hi - p) / d;
-  if (ta > tb) std::swap(ta, tb);
-  t0 = std::max(t0, ta);
-  t1 = std::min(t1, tb);
-  return t0 <= t1;
-}
-
-// Exact distance between segment a-b and the closed square of cell c.
-double segment_box(Point a, Point b, Cell c) {
-  double t0 = 0.0, t1 = 1.0;
-  if (clip(a.x, b.x - a.x, c.x, c.x + 1.0, t0, t1) && clip(a.y, b.y - a.y, c.y, c.y + 1.0, t0, t1))
-    return 0.0;
-  double d = std::min(point_box(a, c), point_box(b, c));
-  for (const Point corner : {Point{1.0 * c.x, 1.0 * c.y}, Point{c.x + 1.0, 1.0 * c.y},
-                             Point{1.0 * c.x, c.y + 1.0}, Point{c.x + 1.0, c.y + 1.0}})
-    d = std::min(d, point_segment(corner, a, b));
-  return d;
-}
 
 // Minimum over s in [0, 1] of |(a0 + s (a1 - a0)) - (b0 + s (b1 - b0))|: two points moving
 // linearly over the same interval.
@@ -97,7 +60,7 @@ std::string check_shape(const Grid& grid, Cell start, const Trajectory& tr) {
   for (std::size_t i = 0; i + 1 < n; ++i)
     if (!std::isfinite(tr.v[i]) || !std::isfinite(tr.w[i]))
       return "trajectory: non-finite command " + std::to_string(i);
-  if (dist(tr.position[0], centre(start)) > kStartTolerance)
+  if (point_distance(tr.position[0], centre(start)) > kStartTolerance)
     return "trajectory: does not start at the start cell's centre";
   for (const auto& ob : tr.obstacles) {
     if (ob.centre.size() != n) return "trajectory: a moving obstacle track has the wrong length";
@@ -112,7 +75,7 @@ std::string check_shape(const Grid& grid, Cell start, const Trajectory& tr) {
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const Pose a{tr.position[i].x, tr.position[i].y, tr.heading[i]};
     const Pose b = unicycle_step(a, tr.v[i] / tr.cell_edge, tr.w[i], tr.t[i + 1] - tr.t[i]);
-    if (dist({b.x, b.y}, tr.position[i + 1]) > kPositionTolerance ||
+    if (point_distance({b.x, b.y}, tr.position[i + 1]) > kPositionTolerance ||
         std::abs(b.theta - tr.heading[i + 1]) > kHeadingTolerance)
       return "trajectory: sample " + std::to_string(i + 1) +
              " does not follow from the previous one under its (v, w) command";
@@ -154,7 +117,7 @@ TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, cons
   for (std::size_t i = 0; i < intervals; ++i) {
     const Point a = pos[i], b = pos[std::min(i + 1, n - 1)];
     const std::size_t j = std::min(i + 1, n - 1);
-    const double len = dist(a, b);
+    const double len = point_distance(a, b);
     const double time = tr.t[j];
     // Static cells.
     double s = std::min(point_clear[i], point_clear[j]);
@@ -166,7 +129,7 @@ TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, cons
                    time, s, r));
     // Unknown cells.
     for (const Cell& c : tr.unknown_cells) {
-      const double u = segment_box(a, b, c);
+      const double u = segment_cell_distance(a, b, c);
       min_static = std::min(min_static, u);
       if (u < r - kContactTolerance)
         collide(Outcome::collision_unknown,
@@ -190,7 +153,7 @@ TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, cons
   }
 
   if (!collided) {
-    const double to_goal = dist(pos.back(), centre(goal));
+    const double to_goal = point_distance(pos.back(), centre(goal));
     if (tr.end_reason == "reached") {
       if (to_goal <= tr.goal_tolerance + kStartTolerance) {
         out.outcome = Outcome::success;

@@ -21,6 +21,8 @@
 #include <cmath>
 #include <limits>
 
+#include "generators/cell_geometry.h"
+
 namespace agv {
 namespace {
 
@@ -39,47 +41,6 @@ std::int64_t ceil_sqrt(std::int64_t v) {
   while (k * k < v) ++k;
   while (k > 0 && (k - 1) * (k - 1) >= v) --k;
   return k;
-}
-
-double point_box(Point p, double x0, double y0) {
-  const double dx = std::max({x0 - p.x, 0.0, p.x - (x0 + 1.0)});
-  const double dy = std::max({y0 - p.y, 0.0, p.y - (y0 + 1.0)});
-  return std::hypot(dx, dy);
-}
-
-double point_segment(Point c, Point a, Point b) {
-  const double ux = b.x - a.x;
-  const double uy = b.y - a.y;
-  const double len2 = ux * ux + uy * uy;
-  double t = 0.0;
-  if (len2 > 0.0) t = std::clamp(((c.x - a.x) * ux + (c.y - a.y) * uy) / len2, 0.0, 1.0);
-  return std::hypot(c.x - (a.x + t * ux), c.y - (a.y + t * uy));
-}
-
-// Does segment a-b meet the closed box [lo, hi] on one axis range? Liang-Barsky clipping.
-bool clip(double p, double d, double lo, double hi, double& t0, double& t1) {
-  if (d == 0.0) return p >= lo && p <= hi;
-  double ta = (lo - p) / d;
-  double tb = (hi - p) / d;
-  if (ta > tb) std::swap(ta, tb);
-  t0 = std::max(t0, ta);
-  t1 = std::min(t1, tb);
-  return t0 <= t1;
-}
-
-// Exact distance between segment a-b and the closed unit square with top-left corner (x0, y0).
-double segment_box(Point a, Point b, double x0, double y0) {
-  double t0 = 0.0;
-  double t1 = 1.0;
-  if (clip(a.x, b.x - a.x, x0, x0 + 1.0, t0, t1) && clip(a.y, b.y - a.y, y0, y0 + 1.0, t0, t1)) {
-    return 0.0;
-  }
-  double d = std::min(point_box(a, x0, y0), point_box(b, x0, y0));
-  if (!(a == b)) {
-    d = std::min({d, point_segment({x0, y0}, a, b), point_segment({x0 + 1.0, y0}, a, b),
-                  point_segment({x0, y0 + 1.0}, a, b), point_segment({x0 + 1.0, y0 + 1.0}, a, b)});
-  }
-  return d;
 }
 
 }  // namespace
@@ -170,7 +131,7 @@ double DistanceTransform::search(Point a, Point b, Candidate* cells, int count) 
     const int cx = cells[k].index % stride_;  // padded coordinates
     const int cy = cells[k].index / stride_;
     const int f = nearest_[cells[k].index];
-    best = std::min(best, segment_box(a, b, f % stride_ - 1.0, f / stride_ - 1.0));
+    best = std::min(best, segment_cell_distance(a, b, Cell{f % stride_ - 1, f / stride_ - 1}));
     if (best == 0.0 || std::sqrt(static_cast<double>(d2)) - kSqrt2 >= best) break;
     const double reach = best + kSqrt2 + 1e-9;
     const auto r = static_cast<int>(std::floor(reach));
@@ -187,7 +148,7 @@ double DistanceTransform::search(Point a, Point b, Candidate* cells, int count) 
           const int ox = cx + sign * dx;
           if (ox < 0 || ox >= stride_) continue;
           if (!blocked_[static_cast<std::size_t>(oy) * stride_ + ox]) continue;
-          best = std::min(best, segment_box(a, b, ox - 1.0, oy - 1.0));
+          best = std::min(best, segment_cell_distance(a, b, Cell{ox - 1, oy - 1}));
         }
       }
     }

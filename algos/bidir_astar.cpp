@@ -206,10 +206,7 @@ class BidirAStarPlanner final : public Planner {
                                                        : "the goal is unreachable from the start";
       }
     }
-    if (result.success && post_.smoothing != SmoothingMode::none) {
-      WorkingPath path(std::move(result.path));
-      finish_path(request.grid, post_, path, result);
-    }
+    apply_postprocessing(request.grid, post_, result);
     return result;
   }
 

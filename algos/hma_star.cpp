@@ -46,6 +46,7 @@
 #include "algos/line_of_sight_batch.h"
 #include "algos/ma_star.h"
 #include "algos/path_simplify.h"
+#include "generators/cell_geometry.h"
 
 namespace agv {
 
@@ -84,8 +85,6 @@ struct HmaScratch {
   std::vector<Eigen::Index> index;
   std::vector<std::uint8_t> free;
 };
-
-double distance(Point a, Point b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
 // One window's swarm.
 class WindowSwarm {
@@ -275,7 +274,8 @@ class HmaStarPlanner final : public Planner {
       WindowSwarm swarm(request.grid, sight_, pso_, request.rng, scratch);
       for (std::size_t n = 0; n + 2 < path.size(); ++n) {
         if (request.deadline.expired()) return PlanResult::failed(Failure::limit, "time limit");
-        const double current = distance(path[n], path[n + 1]) + distance(path[n + 1], path[n + 2]);
+        const double current =
+            point_distance(path[n], path[n + 1]) + point_distance(path[n + 1], path[n + 2]);
         double best = kInf;
         const Point candidate = swarm.run(path[n], path[n + 2], best);
         ++windows;

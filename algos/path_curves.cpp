@@ -8,12 +8,11 @@
 #include <Eigen/Core>
 
 #include "algos/path_simplify.h"
+#include "generators/cell_geometry.h"
 
 namespace agv {
 
 namespace {
-
-double distance(Point a, Point b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
 double squared_distance_to_segment(Point p, Point a, Point b) {
   const double dx = b.x - a.x, dy = b.y - a.y;
@@ -93,7 +92,7 @@ std::vector<Point> sample_bspline(std::span<const Point> controls, double step,
     for (int r = 0; r < 4; ++r) {
       g(r, 0) = q[j + r].x;
       g(r, 1) = q[j + r].y;
-      if (r > 0) hull += distance(q[j + r - 1], q[j + r]);
+      if (r > 0) hull += point_distance(q[j + r - 1], q[j + r]);
     }
     const Eigen::Matrix<double, 4, 2> c = m * g;  // rows: coefficients of 1, t, t^2, t^3
     const int samples = std::max(1, static_cast<int>(std::ceil(hull / step)));
@@ -101,13 +100,13 @@ std::vector<Point> sample_bspline(std::span<const Point> controls, double step,
       const double t = static_cast<double>(k) / samples;
       const Point p{c(0, 0) + t * (c(1, 0) + t * (c(2, 0) + t * c(3, 0))),
                     c(0, 1) + t * (c(1, 1) + t * (c(2, 1) + t * c(3, 1)))};
-      if (!out.empty() && (distance(out.back(), p) <= kSamePoint || on_vertex(p))) continue;
+      if (!out.empty() && (point_distance(out.back(), p) <= kSamePoint || on_vertex(p))) continue;
       out.push_back(p);
       if (segment_of) segment_of->push_back(j);
     }
   }
   out.front() = controls.front();  // exact ends: the validator compares them with start and goal
-  if (out.size() > 1 && distance(out.back(), controls.back()) <= kSamePoint) {
+  if (out.size() > 1 && point_distance(out.back(), controls.back()) <= kSamePoint) {
     out.back() = controls.back();
   } else {
     out.push_back(controls.back());
@@ -122,7 +121,7 @@ namespace {
 // segments, d from the corner).
 std::pair<Point, Point> bezier_ends(std::span<const Point> keys, std::size_t i, double d) {
   const Point prev = keys[i - 1], k = keys[i], next = keys[i + 1];
-  const double l_in = distance(prev, k), l_out = distance(k, next);
+  const double l_in = point_distance(prev, k), l_out = point_distance(k, next);
   return {{k.x - d * (k.x - prev.x) / l_in, k.y - d * (k.y - prev.y) / l_in},
           {k.x + d * (next.x - k.x) / l_out, k.y + d * (next.y - k.y) / l_out}};
 }
@@ -134,7 +133,7 @@ void build_bezier_path(std::span<const Point> keys, const std::vector<double>& d
   out.clear();
   owner.clear();
   auto add = [&](Point p, int who) {
-    if (!out.empty() && distance(out.back(), p) <= kSamePoint) {
+    if (!out.empty() && point_distance(out.back(), p) <= kSamePoint) {
       if (who < 0) {  // a key point wins over a curve end it coincides with
         out.back() = p;
         owner.back() = who;
@@ -170,7 +169,7 @@ std::vector<Point> bezier_corners(const Grid& grid, std::span<const Point> keys,
   std::vector<Point> piece;
   for (std::size_t i = 1; i + 1 < keys.size(); ++i) {
     const Point prev = keys[i - 1], k = keys[i], next = keys[i + 1];
-    const double l_in = distance(prev, k), l_out = distance(k, next);
+    const double l_in = point_distance(prev, k), l_out = point_distance(k, next);
     if (l_in > 0.0 && l_out > 0.0 && !goes_straight(prev, k, next)) {
       double di = std::min({options.corner_distance, l_in / 2, l_out / 2});
       for (int s = 0; s <= options.shrink_steps; ++s, di *= 0.5) {
@@ -313,7 +312,7 @@ void avoid_obstacles(const Grid& grid, std::vector<Point>& keys, const SightRule
       for (int dx = -1; dx <= 1; ++dx) {
         if ((dx == 0 && dy == 0) || !grid.blocked(cx + dx, cy + dy)) continue;
         const Point o = centre({cx + dx, cy + dy});
-        const double len = distance(k, o);
+        const double len = point_distance(k, o);
         if (len > 0.0) {
           ax += (o.x - k.x) / len;  // eq. 12: direction from the key point to the obstacle
           ay += (o.y - k.y) / len;
@@ -346,7 +345,7 @@ void avoid_obstacles(const Grid& grid, std::vector<Point>& keys, const SightRule
           vertex = v;
         }
       }
-      const double len = distance(c, vertex);
+      const double len = point_distance(c, vertex);
       const Point insert{vertex.x + offset * (vertex.x - c.x) / len,
                          vertex.y + offset * (vertex.y - c.y) / len};
       if (!(insert == a) && !(insert == b) && segment_free(grid, a, insert, sight) &&

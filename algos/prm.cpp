@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "algos/sampling_params.h"
+#include "generators/cell_geometry.h"
 
 namespace agv {
 
@@ -50,8 +51,6 @@ struct PrmScratch {
   std::vector<int> parent;
   std::vector<std::pair<double, int>> heap;
 };
-
-double distance(Point a, Point b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
 class PrmPlanner final : public Planner {
  public:
@@ -189,7 +188,7 @@ class PrmPlanner final : public Planner {
       for (int e = s.offsets[su]; e < s.offsets[su + 1]; ++e) {
         const int v = s.targets[static_cast<std::size_t>(e)];
         const auto sv = static_cast<std::size_t>(v);
-        const double dv = d + distance(s.points[su], s.points[sv]);
+        const double dv = d + point_distance(s.points[su], s.points[sv]);
         if (dv < s.dist[sv]) {
           s.dist[sv] = dv;
           s.parent[sv] = u;

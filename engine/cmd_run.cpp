@@ -118,18 +118,15 @@ int command_merge(const std::string& config_path, const std::vector<std::string>
   const SweepConfig config = load_config(locate_config(config_path));
   SweepResults results = empty_results(config);
   const std::string hash = config_hash(config);
-  std::int64_t records = 0;
-  for (const auto& j : journals) records += restore_journal(j, hash, results).records;
+  for (const auto& j : journals) restore_journal(j, hash, results);
   update_completeness(results);
   const std::string path = out.empty() ? config.report_path : out;
   write_json_atomic(build_report(config, results), path);
-  std::int64_t present = 0;
-  for (const auto& r : results.runs) present += r.done ? 1 : 0;
+  const Coverage coverage = coverage_of(results);
   std::printf("merged %zu journals: %lld of %lld runs present%s; report: %s\n", journals.size(),
-              static_cast<long long>(present),
-              static_cast<long long>(scheduled_runs(config, results.plan)),
+              static_cast<long long>(coverage.runs_present),
+              static_cast<long long>(coverage.runs_expected),
               results.complete ? "" : " (INCOMPLETE coverage: the report says so)", path.c_str());
-  (void)records;
   return results.complete ? 0 : 1;
 }
 

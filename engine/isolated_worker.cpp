@@ -207,9 +207,7 @@ int worker_main(std::int64_t memory_mb) {
   std::vector<ConfiguredPlanner> planners;
   try {
     config = parse_config(nlohmann::json::parse(line).at("config"));
-    for (std::size_t i = 0; i < config.planners.size(); ++i)
-      planners.push_back(configure_planner(config.planners[i].name, config.planners[i].params,
-                                           "planners[" + std::to_string(i) + "]"));
+    planners = configure_planners(config);
   } catch (const std::exception& e) {
     std::cout << nlohmann::json{{"fatal", e.what()}}.dump() << "\n" << std::flush;
     return 2;
@@ -232,9 +230,7 @@ int worker_main(std::int64_t memory_mb) {
     if (task != cached_task) {
       Rng rng = map_rng(config.seed, cell, map_index);
       map = make_map(cell.spec, rng);
-      slot.rejections = map->rejections;
-      slot.obstacle_fraction = static_cast<double>(map->grid.obstacle_count()) /
-                               (static_cast<double>(map->grid.width()) * map->grid.height());
+      slot = map_slot_of(*map);
       cached_task = task;
     }
     MapReference ref(map->grid, map->start, map->goal);

@@ -159,8 +159,6 @@ json paired_cell_json(const SweepConfig& config, const SweepResults& r, const Sw
 
 json build_report(const SweepConfig& config, const SweepResults& r) {
   json cells = json::array();
-  std::int64_t runs_done = 0;
-  for (const auto& s : r.runs) runs_done += s.done ? 1 : 0;
   for (const auto& cell : r.plan.cells) {
     std::vector<double> fractions;
     std::int64_t rejections = 0, maps = 0;
@@ -186,24 +184,17 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
                      {"planners", planners},
                      {"paired", paired_cell_json(config, r, cell)}});
   }
-  std::int64_t maps_missing = 0, runs_expected = 0;
-  for (std::int64_t t = 0; t < r.plan.map_tasks(); ++t) {
-    bool any = false;
-    for (std::size_t p = 0; p < r.labels.size(); ++p) {
-      any = any || r.run(t, p).done;
-      runs_expected += r.scheduled(t, p) ? 1 : 0;
-    }
-    maps_missing += any ? 0 : 1;
-  }
+  const Coverage coverage = coverage_of(r);
   json report = {{"schema_version", kReportSchemaVersion},
           {"tool", "agvbench"},
           {"config", config_as_run(config)},
           {"complete", r.complete},
           {"coverage",
-           {{"runs_expected", runs_expected},
-            {"runs_present", runs_done},
-            {"maps_missing", maps_missing}}},
-          {"totals", {{"cells", r.plan.cells.size()}, {"maps", r.plan.map_tasks()}, {"runs", runs_done}}},
+           {{"runs_expected", coverage.runs_expected},
+            {"runs_present", coverage.runs_present},
+            {"maps_missing", coverage.maps_missing}}},
+          {"totals",
+           {{"cells", r.plan.cells.size()}, {"maps", r.plan.map_tasks()}, {"runs", coverage.runs_present}}},
           {"cells", cells},
           {"environment", environment_json(r.threads)},
           {"timing",

@@ -27,21 +27,6 @@ struct Worker {
   std::unique_ptr<WorkerProcess> process;
 };
 
-std::vector<ConfiguredPlanner> configure_all(const SweepConfig& config) {
-  std::vector<ConfiguredPlanner> planners;
-  for (std::size_t i = 0; i < config.planners.size(); ++i) {
-    const auto& p = config.planners[i];
-    planners.push_back(configure_planner(p.name, p.params, "planners[" + std::to_string(i) + "]"));
-  }
-  return planners;
-}
-
-void fill_map_slot(MapSlot& ms, const MapInstance& inst) {
-  ms.rejections = inst.rejections;
-  ms.obstacle_fraction = static_cast<double>(inst.grid.obstacle_count()) /
-                         (static_cast<double>(inst.grid.width()) * inst.grid.height());
-  ms.done = true;
-}
 
 void fill_run_slot(RunSlot& slot, const RunOutput& out) {
   slot.outcome = out.outcome;
@@ -53,6 +38,24 @@ void fill_run_slot(RunSlot& slot, const RunOutput& out) {
 }
 
 }  // namespace
+
+std::vector<ConfiguredPlanner> configure_planners(const SweepConfig& config) {
+  std::vector<ConfiguredPlanner> planners;
+  for (std::size_t i = 0; i < config.planners.size(); ++i) {
+    const auto& p = config.planners[i];
+    planners.push_back(configure_planner(p.name, p.params, "planners[" + std::to_string(i) + "]"));
+  }
+  return planners;
+}
+
+MapSlot map_slot_of(const MapInstance& inst) {
+  MapSlot ms;
+  ms.rejections = inst.rejections;
+  ms.obstacle_fraction = static_cast<double>(inst.grid.obstacle_count()) /
+                         (static_cast<double>(inst.grid.width()) * inst.grid.height());
+  ms.done = true;
+  return ms;
+}
 
 SweepResults empty_results(const SweepConfig& config) {
   SweepResults res;
@@ -68,11 +71,22 @@ SweepResults empty_results(const SweepConfig& config) {
   return res;
 }
 
+Coverage coverage_of(const SweepResults& r) {
+  Coverage c;
+  for (const int maps : r.scoped_maps) c.runs_expected += maps;
+  for (std::int64_t t = 0; t < r.plan.map_tasks(); ++t) {
+    bool any = false;
+    for (std::size_t p = 0; p < r.labels.size(); ++p) any = any || r.run(t, p).done;
+    c.maps_missing += any ? 0 : 1;
+  }
+  for (const auto& s : r.runs) c.runs_present += s.done ? 1 : 0;
+  return c;
+}
+
 void update_completeness(SweepResults& results) {
-  results.complete = true;
-  for (std::int64_t t = 0; t < results.plan.map_tasks(); ++t)
-    for (std::size_t p = 0; p < results.labels.size(); ++p)
-      results.complete = results.complete && (results.run(t, p).done || !results.scheduled(t, p));
+  // Only scheduled runs can be done: the runner skips the others and the journal refuses them.
+  const Coverage c = coverage_of(results);
+  results.complete = c.runs_present == c.runs_expected;
 }
 
 SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
@@ -121,7 +135,7 @@ SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
     if (iso.enabled) {
       w.process = std::make_unique<WorkerProcess>(worker_command, iso.memory_mb, config_line);
     } else {
-      w.planners = configure_all(config);
+      w.planners = configure_planners(config);
     }
     return w;
   });
@@ -154,7 +168,7 @@ SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
       if (!iso.enabled) {
         Rng rng = map_rng(config.seed, cell, map_index);
         const MapInstance inst = make_map(cell.spec, rng);
-        fill_map_slot(ms, inst);
+        ms = map_slot_of(inst);
         MapReference ref(inst.grid, inst.start, inst.goal);
         for (std::size_t p = 0; p < config.planners.size(); ++p) {
           RunSlot& slot = res.run(task, p);
@@ -179,7 +193,7 @@ SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
             // The worker died or was killed: the parent writes the run's record itself.
             if (!ms.done) {
               Rng rng = map_rng(config.seed, cell, map_index);
-              fill_map_slot(ms, make_map(cell.spec, rng));
+              ms = map_slot_of(make_map(cell.spec, rng));
             }
             RunOutput out;
             out.metrics.fill(std::numeric_limits<double>::quiet_NaN());

@@ -81,9 +81,22 @@ struct SweepOptions {
   IsolationOptions isolation;
 };
 
+// Every planner of the config, configured: one set per worker thread or worker process.
+std::vector<ConfiguredPlanner> configure_planners(const SweepConfig& config);
+// What is kept of a generated map.
+MapSlot map_slot_of(const MapInstance& inst);
+
+// How much of a sweep's results are present: the report's `coverage`.
+struct Coverage {
+  std::int64_t runs_expected = 0;  // scheduled runs (planner scopes counted)
+  std::int64_t runs_present = 0;
+  std::int64_t maps_missing = 0;   // map tasks with no run at all
+};
+Coverage coverage_of(const SweepResults& results);
+
 // Empty results shaped for the config: every slot present, none done (resume and merge fill them).
 SweepResults empty_results(const SweepConfig& config);
-// Recomputes `complete` from the slots.
+// Recomputes `complete` (every scheduled run present) from the slots.
 void update_completeness(SweepResults& results);
 
 // Runs the sweep. Throws InputError for bad configs and std::runtime_error for failures such as

@@ -6,6 +6,7 @@
 set -u
 bin=$1
 src=$2
+same=$src/slurm/same_report.py
 source "$(dirname "$0")/lib.sh"
 
 cat >config.json <<'JSON'
@@ -15,17 +16,6 @@ cat >config.json <<'JSON'
 JSON
 total=$((2 * 2 * 2 * 150 * 2))
 
-cat >same.py <<'EOF_PY'
-import json, sys
-def strip(o):
-    if isinstance(o, dict):
-        return {k: strip(v) for k, v in o.items() if k not in ("timing", "environment")}
-    if isinstance(o, list):
-        return [strip(v) for v in o]
-    return o
-a, b = (strip(json.load(open(p))) for p in sys.argv[1:3])
-sys.exit(0 if a == b else 1)
-EOF_PY
 cat >journal_ok.py <<'EOF_PY'
 import json, sys
 ids = [json.loads(l)["task_id"] for l in open(sys.argv[1]) if l.strip()]
@@ -62,7 +52,7 @@ for pct in 10 50 90; do
   fi
   "$bin" run config.json --threads 2 --out final.json --resume j.jsonl --quiet
   [ $? -eq 0 ] || bad "resume after ~$pct%: non-zero exit"
-  $py same.py full.json final.json && ok "resume after ~$pct%: report equals the uninterrupted one" \
+  $py "$same" full.json final.json && ok "resume after ~$pct%: report equals the uninterrupted one" \
     || bad "resume after ~$pct%: report differs"
   $py journal_ok.py j.jsonl $total && ok "resume after ~$pct%: every run exactly once" \
     || bad "resume after ~$pct%: runs missing or repeated"
@@ -73,7 +63,7 @@ rm -f j.jsonl
 "$bin" run config.json --threads 2 --out part.json --runs-out j.jsonl --quiet
 head -c -40 j.jsonl >t.jsonl && head -n 100 t.jsonl >j2.jsonl && tail -c 70 t.jsonl | head -c 50 >>j2.jsonl
 "$bin" run config.json --threads 2 --out final.json --resume j2.jsonl --quiet \
-  && $py same.py full.json final.json && $py journal_ok.py j2.jsonl $total \
+  && $py "$same" full.json final.json && $py journal_ok.py j2.jsonl $total \
   && ok "torn last line tolerated" || bad "torn last line"
 
 # A journal of another config is refused.

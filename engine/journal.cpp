@@ -111,18 +111,19 @@ JournalStats restore_journal(const std::string& path, const std::string& config_
   std::int64_t line_no = 0;
   while (std::getline(in, line)) {
     ++line_no;
-    if (line.empty()) continue;
-    const bool last = in.peek() == std::char_traits<char>::eof();
-    const std::string where = path + ":" + std::to_string(line_no);
-    json rec = json::parse(line, nullptr, false);
-    if (rec.is_discarded() || !rec.is_object()) {
-      // A kill can cut the last record short; anything else is a damaged journal.
-      if (last) {
-        ++stats.torn_lines;
-        continue;
-      }
-      throw InputError(where + ": malformed journal record");
+    // A last line without its newline was cut by a kill even when it parses. The writer cuts
+    // the journal back to its last newline, so its run must not count as restored (it would
+    // then be missing from the journal): it is run again.
+    if (in.eof()) {
+      if (!line.empty()) ++stats.torn_lines;
+      break;
     }
+    if (line.empty()) continue;
+    const std::string where = path + ":" + std::to_string(line_no);
+    // Records are written whole, newline included: a complete line that does not parse is a
+    // damaged journal, not a kill's doing.
+    json rec = json::parse(line, nullptr, false);
+    if (rec.is_discarded() || !rec.is_object()) throw InputError(where + ": malformed journal record");
     if (restorer.restore(rec, where)) {
       ++stats.records;
     } else {

@@ -115,13 +115,15 @@ TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, cons
 
   const std::size_t intervals = n > 1 ? n - 1 : 1;
   for (std::size_t i = 0; i < intervals; ++i) {
-    const Point a = pos[i], b = pos[std::min(i + 1, n - 1)];
     const std::size_t j = std::min(i + 1, n - 1);
+    const Point a = pos[i], b = pos[j];
     const double len = point_distance(a, b);
     const double time = tr.t[j];
-    // Static cells.
+    // Static cells. The chord's clearance is at least its endpoints' minus half its length; the
+    // exact value is needed where that bound could fall below the radius (a contact) or below
+    // the minimum so far (the metric).
     double s = std::min(point_clear[i], point_clear[j]);
-    if (s - 0.5 * len < std::min(min_static, r)) s = dt.segment_clearance(a, b);
+    if (s - 0.5 * len < std::max(min_static, r)) s = dt.segment_clearance(a, b);
     min_static = std::min(min_static, s);
     if (s < r - kContactTolerance)
       collide(Outcome::collision_static,

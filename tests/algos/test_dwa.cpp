@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <string>
@@ -30,6 +31,7 @@
 #include "algos/unicycle.h"
 #include "engine/run_executor.h"
 #include "engine/trajectory_judge.h"
+#include "generators/cell_geometry.h"
 #include "generators/distance_transform.h"
 #include "generators/map_generators.h"
 
@@ -238,6 +240,36 @@ TEST(Fusion, HeadOnMovingObstacleIsAvoidedByImprovedDwa) {
     EXPECT_LT(gap, 3.0) << "the obstacle must have come close enough to matter";
   }
   EXPECT_EQ(avoided, 3);
+}
+
+// min_clearance_static is exact: the minimum over every chord of the executed trajectory of the
+// distance to the static and unknown cells, recomputed here chord by chord.
+TEST(Fusion, JudgedStaticClearanceIsTheExactMinimumOverTheTrajectory) {
+  const ConfiguredPlanner c = configure_planner(
+      "fusion_astar_dwa", {{"unknown_obstacles", 2}, {"dynamic_obstacles", 0}}, "t");
+  int checked = 0;
+  for (int m = 0; m < 12; ++m) {
+    const MapInstance map = random_map(0.2, m);
+    Scratch scratch;
+    Rng rng(5, m);
+    const PlanResult run = c.planner->plan({map.grid, map.start, map.goal, rng, scratch});
+    ASSERT_TRUE(run.trajectory) << "map " << m;
+    const Trajectory& tr = *run.trajectory;
+    const TrajectoryVerdict verdict = judge_trajectory(map.grid, map.start, map.goal, tr);
+    double judged = std::numeric_limits<double>::quiet_NaN();
+    for (const auto& [name, value] : verdict.metrics)
+      if (name == "min_clearance_static") judged = value;
+    const DistanceTransform& dt = map.grid.distance_transform();
+    double exact = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i + 1 < tr.position.size(); ++i) {
+      const Point a = tr.position[i], b = tr.position[i + 1];
+      exact = std::min(exact, dt.segment_clearance(a, b));
+      for (const Cell& u : tr.unknown_cells) exact = std::min(exact, segment_cell_distance(a, b, u));
+    }
+    EXPECT_DOUBLE_EQ(judged, exact * tr.cell_edge) << "map " << m;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 12);
 }
 
 TEST(Fusion, SameSeedSameTrajectory) {

@@ -75,7 +75,9 @@ int command_run(const RunCommand& cmd) {
   SweepOptions options;
   options.threads = config.threads;
   options.progress = !cmd.quiet;
-  options.runs_path = cmd.resume.empty() ? config.runs_path : cmd.resume;
+  // A resumed sweep appends to the journal it restores: run_sweep refuses another --runs-out
+  // (and the config's "runs" field does not apply).
+  options.runs_path = !cmd.runs_out.empty() ? cmd.runs_out : cmd.resume.empty() ? config.runs_path : "";
   options.resume_path = cmd.resume;
   if (!cmd.shard.empty()) std::tie(options.shard_index, options.shard_count) = parse_shard(cmd.shard);
   options.isolation.enabled = cmd.isolate;
@@ -96,8 +98,9 @@ int command_run(const RunCommand& cmd) {
                  "incomplete): %s; resume with --resume %s\n",
                  static_cast<long long>(results.executed_runs),
                  static_cast<long long>(results.restored_runs), config.report_path.c_str(),
-                 options.runs_path.empty() ? "JOURNAL (none was written: use --runs-out)"
-                                           : options.runs_path.c_str());
+                 !options.resume_path.empty() ? options.resume_path.c_str()
+                 : options.runs_path.empty()   ? "JOURNAL (none was written: use --runs-out)"
+                                               : options.runs_path.c_str());
     return 130;
   }
   if (!cmd.quiet) {

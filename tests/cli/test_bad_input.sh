@@ -56,6 +56,9 @@ good_config report.json | sed 's/"seed": 1/"seed": 1, "sede": 2/' >typo.json
 expect "unknown field" 'sede: unknown field' "$bin" run typo.json
 
 expect "missing config file" 'nope.json: cannot open' "$bin" run nope.json --out report.json
+good_config report.json >good.json
+expect "resume into another journal" '--resume: the journal is appended to' \
+  "$bin" run good.json --resume j.jsonl --runs-out other.jsonl
 expect "validate: unknown planner" 'unknown planner' "$bin" validate unknown_planner.json
 
 printf 'type octile\nheight 3\nwidth 3\nmap\n...\n.x.\n...\n' >badchar.map

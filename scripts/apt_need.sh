@@ -4,7 +4,8 @@
 set -euo pipefail
 missing=()
 for p in "$@"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null) || status=
+  [[ $status == "install ok installed" ]] || missing+=("$p")
 done
 ((${#missing[@]})) || exit 0
 echo "apt_need: installing ${missing[*]}" >&2

@@ -80,7 +80,10 @@ for part in "${parts[@]}"; do
       configure build-tsan thread -DTBB_DIR="$root/build-tsan/tbb/install/lib/cmake/TBB"
       cmake --build build-tsan -j "$jobs" --target agvbench test_sweep
       for bin in build-tsan/agvbench build-tsan/tests/test_sweep; do
-        ldd "$bin" | grep -q "build-tsan/tbb/install/lib/libtbb" ||
+        # ldd's whole output is captured first: `ldd | grep -q` under pipefail fails when grep
+        # exits at its first match and ldd then dies of SIGPIPE (issue 12).
+        libs=$(ldd "$bin")
+        [[ $libs == *"build-tsan/tbb/install/lib/libtbb"* ]] ||
           { echo "sanitize: $bin does not load the TSan-built libtbb" >&2; exit 1; }
       done
       echo "sanitize: tsan build took $(( $(date +%s) - start )) s"

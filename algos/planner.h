@@ -10,9 +10,9 @@
 #include <utility>
 #include <vector>
 
-#include "generators/corner_rule.h"
-#include "generators/rng.h"
-#include "generators/grid.h"
+#include "core/corner_rule.h"
+#include "core/rng.h"
+#include "core/grid.h"
 
 namespace agv {
 
@@ -42,7 +42,7 @@ struct PhaseTime {
 };
 
 // What a planner that drives a simulated robot through a world with moving obstacles executed
-// (the DWA fusion planners, algos/fusion.h), for the engine to judge: collisions, reaching the
+// (the DWA fusion planners, algos/local/fusion.h), for the engine to judge: collisions, reaching the
 // goal and the fusion metrics are decided from this record by engine/trajectory_judge.h, never
 // taken from the planner. Positions in continuous cell coordinates, times in seconds.
 struct DynamicTrack {

@@ -2,19 +2,19 @@
 
 #include <deque>
 
-#include "algos/astar.h"
-#include "algos/dijkstra.h"
-#include "algos/aco.h"
-#include "algos/alt_astar.h"
-#include "algos/bidir_astar.h"
-#include "algos/improved_astar.h"
-#include "algos/kin_astar.h"
-#include "algos/ma_star.h"
-#include "algos/hma_star.h"
-#include "algos/birrt.h"
-#include "algos/fusion.h"
-#include "algos/prm.h"
-#include "algos/rrt.h"
+#include "algos/search/astar.h"
+#include "algos/search/dijkstra.h"
+#include "algos/swarm/aco.h"
+#include "algos/search/alt_astar.h"
+#include "algos/search/bidir_astar.h"
+#include "algos/search/improved_astar.h"
+#include "algos/search/kin_astar.h"
+#include "algos/search/ma_star.h"
+#include "algos/swarm/hma_star.h"
+#include "algos/sampling/birrt.h"
+#include "algos/local/fusion.h"
+#include "algos/sampling/prm.h"
+#include "algos/sampling/rrt.h"
 
 namespace agv {
 

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "algos/params.h"
+#include "core/params.h"
 #include "algos/planner.h"
 
 namespace agv {

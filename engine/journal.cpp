@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <limits>
 
-#include "generators/input_error.h"
+#include "core/input_error.h"
 
 namespace agv {
 

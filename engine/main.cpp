@@ -6,7 +6,7 @@
 
 #include "engine/commands.h"
 #include "engine/isolated_worker.h"
-#include "generators/input_error.h"
+#include "core/input_error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"agvbench: a parallel benchmark engine for AGV grid path planners"};

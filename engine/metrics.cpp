@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "engine/statistics.h"
-#include "generators/distance_transform.h"
+#include "core/distance_transform.h"
 
 namespace agv {
 

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <utility>
 
-#include "generators/grid.h"
+#include "core/grid.h"
 
 namespace agv {
 

@@ -6,7 +6,7 @@
 #include <new>
 #include <stdexcept>
 
-#include "algos/dijkstra.h"
+#include "algos/search/dijkstra.h"
 #include "engine/trajectory_judge.h"
 #include "engine/validator.h"
 

@@ -5,7 +5,7 @@
 #include <set>
 #include <sstream>
 
-#include "generators/rng.h"
+#include "core/rng.h"
 
 namespace agv {
 

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <limits>
 
-#include "algos/unicycle.h"
-#include "generators/cell_geometry.h"
-#include "generators/distance_transform.h"
+#include "algos/local/unicycle.h"
+#include "core/cell_geometry.h"
+#include "core/distance_transform.h"
 
 namespace agv {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The engine's judge of a simulated robot run (the fusion planners, algos/fusion.h). The
+// The engine's judge of a simulated robot run (the fusion planners, algos/local/fusion.h). The
 // planner proposes a trajectory; the engine decides, independently of the planner's own world
 // code, whether the robot disc hit anything and whether it reached the goal, and computes the
 // fusion metrics of METRICS.md from the record alone.
@@ -9,7 +9,7 @@
 //    moving obstacle track as long as the trajectory, finite values, times increasing from 0,
 //    the first position at the start cell's centre, unknown cells inside the grid and free in it;
 // 2. kinematics: each sample follows from the previous one by the unicycle arc of its command
-//    (algos/unicycle.h) within 1e-6 cells and 1e-9 rad (a planner cannot teleport its robot);
+//    (algos/local/unicycle.h) within 1e-6 cells and 1e-9 rad (a planner cannot teleport its robot);
 // 3. collisions, on the straight chords between samples (the arcs deviate from them by at most
 //    v dt * |w| dt / 8, under 0.002 cells at paper 003's limits): the robot disc against the
 //    static cells (exact segment clearance from the distance transform), against the unknown

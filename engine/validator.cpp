@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <utility>
 
-#include "algos/line_of_sight.h"
+#include "core/line_of_sight.h"
 
 namespace agv {
 

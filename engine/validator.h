@@ -6,8 +6,8 @@
 #include <span>
 #include <string>
 
-#include "generators/corner_rule.h"
-#include "generators/grid.h"
+#include "core/corner_rule.h"
+#include "core/grid.h"
 
 namespace agv {
 

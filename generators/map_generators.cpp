@@ -61,7 +61,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "generators/connectivity.h"
+#include "core/connectivity.h"
 
 namespace agv {
 namespace {

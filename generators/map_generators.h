@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "generators/rng.h"
-#include "generators/corner_rule.h"
-#include "generators/grid.h"
+#include "core/rng.h"
+#include "core/corner_rule.h"
+#include "core/grid.h"
 
 namespace agv {
 

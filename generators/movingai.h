@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "generators/grid.h"
-#include "generators/input_error.h"
+#include "core/grid.h"
+#include "core/input_error.h"
 
 namespace agv {
 

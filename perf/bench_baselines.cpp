@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "algos/registry.h"
-#include "algos/rrt_tree.h"
+#include "algos/sampling/rrt_tree.h"
 #include "generators/map_generators.h"
 #include "perf/bench_maps.h"
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "algos/dwa.h"
+#include "algos/local/dwa.h"
 #include "algos/registry.h"
 #include "generators/map_generators.h"
 

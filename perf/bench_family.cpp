@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "algos/line_of_sight.h"
-#include "algos/path_curves.h"
-#include "algos/path_simplify.h"
+#include "core/line_of_sight.h"
+#include "algos/postprocess/path_curves.h"
+#include "algos/postprocess/path_simplify.h"
 #include "algos/registry.h"
 #include "generators/map_generators.h"
 #include "perf/bench_maps.h"

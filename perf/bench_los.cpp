@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "algos/line_of_sight.h"
-#include "algos/line_of_sight_batch.h"
-#include "generators/grid.h"
-#include "generators/rng.h"
+#include "core/line_of_sight.h"
+#include "core/line_of_sight_batch.h"
+#include "core/grid.h"
+#include "core/rng.h"
 
 namespace agv {
 namespace {

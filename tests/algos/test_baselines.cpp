@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "algos/dijkstra.h"
+#include "algos/search/dijkstra.h"
 #include "algos/registry.h"
-#include "algos/rrt_tree.h"
+#include "algos/sampling/rrt_tree.h"
 #include "engine/validator.h"
-#include "generators/corner_rule.h"
+#include "core/corner_rule.h"
 #include "generators/map_generators.h"
 
 namespace agv {

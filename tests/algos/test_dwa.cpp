@@ -11,7 +11,7 @@
 // velocity 0.4) 96 / 83 / 81 % (with the classic score 97 / 99 / 100 %: the paper's heavy
 // velocity weight drives the robot into the DWA's local minima), pure `dwa` 46 / 6 / 0 %.
 // The literal reading (heading at the key point itself, no turn speed limit, waypoint
-// tolerance 0.5; algos/fusion_drive.h) reached 82 / 51 / 29 %.
+// tolerance 0.5; algos/local/fusion_drive.h) reached 82 / 51 / 29 %.
 
 #include <gtest/gtest.h>
 
@@ -24,15 +24,15 @@
 #include <string>
 #include <vector>
 
-#include "algos/dwa.h"
-#include "algos/dwa_world.h"
-#include "algos/fusion.h"
+#include "algos/local/dwa.h"
+#include "algos/local/dwa_world.h"
+#include "algos/local/fusion.h"
 #include "algos/registry.h"
-#include "algos/unicycle.h"
+#include "algos/local/unicycle.h"
 #include "engine/run_executor.h"
 #include "engine/trajectory_judge.h"
-#include "generators/cell_geometry.h"
-#include "generators/distance_transform.h"
+#include "core/cell_geometry.h"
+#include "core/distance_transform.h"
 #include "generators/map_generators.h"
 
 namespace agv {

@@ -16,13 +16,13 @@
 #include <string>
 #include <vector>
 
-#include "algos/dijkstra.h"
-#include "algos/heuristics.h"
-#include "algos/kin_astar.h"
-#include "algos/line_of_sight.h"
-#include "algos/path_curves.h"
-#include "algos/path_simplify.h"
-#include "algos/postprocess_params.h"
+#include "algos/search/dijkstra.h"
+#include "algos/search/heuristics.h"
+#include "algos/search/kin_astar.h"
+#include "core/line_of_sight.h"
+#include "algos/postprocess/path_curves.h"
+#include "algos/postprocess/path_simplify.h"
+#include "algos/postprocess/postprocess_params.h"
 #include "algos/registry.h"
 #include "engine/metrics.h"
 #include "engine/validator.h"

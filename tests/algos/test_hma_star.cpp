@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "algos/hma_star.h"
-#include "algos/line_of_sight.h"
+#include "algos/swarm/hma_star.h"
+#include "core/line_of_sight.h"
 #include "algos/registry.h"
 #include "engine/metrics.h"
 #include "engine/statistics.h"

@@ -10,13 +10,13 @@
 #include <tuple>
 #include <vector>
 
-#include "algos/astar.h"
-#include "algos/dijkstra.h"
-#include "algos/grid_search_params.h"
-#include "algos/heuristics.h"
+#include "algos/search/astar.h"
+#include "algos/search/dijkstra.h"
+#include "algos/search/grid_search_params.h"
+#include "algos/search/heuristics.h"
 #include "algos/registry.h"
-#include "algos/search_core.h"
-#include "generators/corner_rule.h"
+#include "algos/search/search_core.h"
+#include "core/corner_rule.h"
 #include "generators/movingai.h"
 
 namespace agv {

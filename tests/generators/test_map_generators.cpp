@@ -12,10 +12,10 @@
 #include <utility>
 #include <vector>
 
-#include "generators/connectivity.h"
-#include "generators/corner_rule.h"
+#include "core/connectivity.h"
+#include "core/corner_rule.h"
 #include "generators/map_generators.h"
-#include "generators/rng.h"
+#include "core/rng.h"
 
 namespace agv {
 namespace {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "generators/movingai.h"
-#include "generators/rng.h"
+#include "core/rng.h"
 
 namespace agv {
 namespace {

@@ -1,0 +1,324 @@
+// GCC 12 flags the `_mm512_undefined_pd()` placeholders inside its own AVX-512 intrinsics once
+// Eigen's packet min/max/sqrt are inlined here (a known false positive of -Wmaybe-uninitialized,
+// GCC bug 105593); nothing of ours is uninitialised. Before the includes: the warning is
+// reported at the intrinsics header's lines.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include "algos/local/dwa.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace agv {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Squared exact distance from (x, y) to the nearest obstacle square of the 3x3 block around its
+// cell, capped at 1: no square outside that block is closer than 1 to any point of the cell.
+// Branch-free over the padded occupancy (the border ring makes the 8 neighbours always valid).
+inline double capped_static_sq(const std::uint8_t* occ, int stride, int width, int height,
+                               double x, double y) {
+  if (!(x >= 0.0 && y >= 0.0 && x <= width && y <= height)) return 0.0;  // also catches NaN
+  const int cx = std::min(static_cast<int>(x), width);  // x == width lies on the border ring
+  const int cy = std::min(static_cast<int>(y), height);
+  const double fx = x - cx, fy = y - cy;
+  const double gx = 1.0 - fx, gy = 1.0 - fy;
+  const std::uint8_t* c = occ + (cy + 1) * stride + (cx + 1);
+  const double fx2 = fx * fx, fy2 = fy * fy, gx2 = gx * gx, gy2 = gy * gy;
+  double d = 1.0;
+  d = std::min(d, c[-1] ? fx2 : 1.0);
+  d = std::min(d, c[1] ? gx2 : 1.0);
+  d = std::min(d, c[-stride] ? fy2 : 1.0);
+  d = std::min(d, c[stride] ? gy2 : 1.0);
+  d = std::min(d, c[-stride - 1] ? fx2 + fy2 : 1.0);
+  d = std::min(d, c[-stride + 1] ? gx2 + fy2 : 1.0);
+  d = std::min(d, c[stride - 1] ? fx2 + gy2 : 1.0);
+  d = std::min(d, c[stride + 1] ? gx2 + gy2 : 1.0);
+  return c[0] ? 0.0 : d;
+}
+
+// Samples n points over [lo, hi], endpoints included (one point: the middle).
+inline double sample_at(double lo, double hi, int i, int n) {
+  if (n <= 1) return 0.5 * (lo + hi);
+  return lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(n - 1);
+}
+
+}  // namespace
+
+const char* to_string(DwaScore s) {
+  switch (s) {
+    case DwaScore::classic:
+      return "classic";
+    case DwaScore::improved_003:
+      return "improved_003";
+    case DwaScore::following_004:
+      return "following_004";
+  }
+  return "unknown";
+}
+
+DwaWeights default_weights(DwaScore s) {
+  switch (s) {
+    case DwaScore::improved_003:
+      return {0.2, 0.4, 0.2, 0.35};
+    case DwaScore::classic:
+    case DwaScore::following_004:
+      return {0.2, 0.1, 0.3, 0.0};
+  }
+  return {};
+}
+
+double capped_static_clearance(const Grid& grid, Point p) {
+  return std::sqrt(capped_static_sq(grid.occupancy(), grid.stride(), grid.width(), grid.height(),
+                                    p.x, p.y));
+}
+
+Point aim_point(Point a, Point b, Point p, double lookahead) {
+  const double ux = b.x - a.x, uy = b.y - a.y;
+  const double len = std::hypot(ux, uy);
+  if (len < 1e-12) return b;
+  const double along = ((p.x - a.x) * ux + (p.y - a.y) * uy) / len + lookahead;
+  if (along >= len) return b;
+  const double t = std::max(0.0, along) / len;
+  return {a.x + t * ux, a.y + t * uy};
+}
+
+bool passes_goal(Point p, Point prev, Point goal, const GoalPassing& rule) {
+  const double dx = p.x - goal.x, dy = p.y - goal.y;
+  const double d2 = dx * dx + dy * dy;
+  if (d2 <= rule.tolerance * rule.tolerance) return true;
+  if (d2 > rule.radius * rule.radius) return false;
+  return dx * (goal.x - prev.x) + dy * (goal.y - prev.y) >= 0.0;
+}
+
+VelocityWindow dynamic_window(const DwaParams& p, double v, double w) {
+  // Eq. 9 (reachable in one control period) intersected with eq. 8 (limits, v_min = 0).
+  VelocityWindow win;
+  win.v_lo = std::max(0.0, v - p.acc_v * p.dt);
+  win.v_hi = std::min(p.v_max, v + p.acc_v * p.dt);
+  win.w_lo = std::max(-p.w_max, w - p.acc_w * p.dt);
+  win.w_hi = std::min(p.w_max, w + p.acc_w * p.dt);
+  if (win.v_lo > win.v_hi) win.v_lo = win.v_hi = std::clamp(v, 0.0, p.v_max);
+  if (win.w_lo > win.w_hi) win.w_lo = win.w_hi = std::clamp(w, -p.w_max, p.w_max);
+  return win;
+}
+
+DwaDecision dwa_step(const DwaParams& p, const Pose& pose, double v, double w,
+                     const DwaTarget& target, const DwaView& view, DwaScratch& s) {
+  const std::span<const Point> goals = target.goals;
+  const GoalPassing& passing = target.passing;
+  const int nv = std::max(1, p.v_samples), nw = std::max(1, p.w_samples);
+  const int n = nv * nw;
+  const int steps = std::max(1, static_cast<int>(std::lround(p.predict_time / p.dt)));
+  const double to_cells = 1.0 / p.cell_edge;
+  VelocityWindow win = dynamic_window(p, v, w);
+  if (target.speed_cap < win.v_hi) win.v_hi = std::max(win.v_lo, target.speed_cap);
+
+  DwaDecision out;
+  out.samples = n;
+  out.rollout_steps = steps;
+
+  for (auto* a : {&s.v, &s.w, &s.px, &s.py, &s.ux, &s.uy, &s.chord, &s.rot_c, &s.rot_s,
+                  &s.step_static, &s.step_other, &s.min_static, &s.min_other, &s.hit_static,
+                  &s.hit_other,
+                  &s.goal_index,
+                  &s.heading, &s.velocity, &s.dist, &s.dist_dyna, &s.score, &s.smoothed})
+    a->resize(n);
+  s.admissible.resize(n);
+
+  for (int iv = 0; iv < nv; ++iv)
+    for (int iw = 0; iw < nw; ++iw) {
+      s.v[iv * nw + iw] = sample_at(win.v_lo, win.v_hi, iv, nv);
+      s.w[iv * nw + iw] = sample_at(win.w_lo, win.w_hi, iw, nw);
+    }
+
+  // Rollout set-up: each step is the exact arc of algos/local/unicycle.h, its chord direction rotating
+  // by w dt per step.
+  for (int i = 0; i < n; ++i) {
+    const double half = 0.5 * p.dt * s.w[i];
+    s.chord[i] = s.v[i] * to_cells * p.dt * sinc(half);
+    s.ux[i] = std::cos(pose.theta + half);
+    s.uy[i] = std::sin(pose.theta + half);
+    s.rot_c[i] = std::cos(2.0 * half);
+    s.rot_s[i] = std::sin(2.0 * half);
+  }
+  s.px.setConstant(pose.x);
+  s.py.setConstant(pose.y);
+
+  const std::uint8_t* occ = view.known.occupancy();
+  const int stride = view.known.stride(), width = view.known.width(), height = view.known.height();
+  const double dyn_cap = std::max(p.dynamic_clearance_cap, p.robot_radius + p.safety_margin);
+
+  // Clearance of the current position: a robot already inside the safety band (a moving obstacle
+  // came close, an unknown cell was just seen) must still be able to move away, so the hit
+  // threshold is lowered to just below where it stands, for that class of obstacle only (a
+  // moving disc close by must not let the robot graze a wall).
+  double now_other = dyn_cap;
+  for (const Cell& c : view.unknown) {
+    const double dx = std::max({c.x - pose.x, 0.0, pose.x - (c.x + 1.0)});
+    const double dy = std::max({c.y - pose.y, 0.0, pose.y - (c.y + 1.0)});
+    now_other = std::min(now_other, std::sqrt(dx * dx + dy * dy));
+  }
+  for (const Disc& d : view.moving)
+    now_other = std::min(now_other, std::hypot(pose.x - d.centre.x, pose.y - d.centre.y) -
+                                        d.radius - p.dynamic_margin);
+  const double now_static = std::sqrt(capped_static_sq(occ, stride, width, height, pose.x, pose.y));
+  auto threshold_at = [&](double now) {
+    return p.robot_radius + std::clamp(now - p.robot_radius - 1e-6, 0.0, p.safety_margin);
+  };
+  const double threshold_static = threshold_at(now_static);
+  const double threshold_other = threshold_at(now_other);
+
+  s.min_static.setConstant(1.0);
+  s.min_other.setConstant(dyn_cap);
+  s.hit_static.setConstant(steps + 1);
+  s.hit_other.setConstant(steps + 1);
+  s.goal_index.setZero();
+  const auto goal_count = static_cast<int>(goals.size());
+  const double tol2 = passing.tolerance * passing.tolerance;
+  const double radius2 = passing.radius * passing.radius;
+  for (int k = 1; k <= steps; ++k) {
+    s.px += s.chord * s.ux;
+    s.py += s.chord * s.uy;
+    for (int i = 0; i < n; ++i) {
+      const double ux = s.ux[i];
+      s.ux[i] = ux * s.rot_c[i] - s.uy[i] * s.rot_s[i];
+      s.uy[i] = ux * s.rot_s[i] + s.uy[i] * s.rot_c[i];
+      s.step_static[i] = capped_static_sq(occ, stride, width, height, s.px[i], s.py[i]);
+    }
+    s.step_static = s.step_static.sqrt();
+    s.step_other.setConstant(dyn_cap);
+    for (const Cell& c : view.unknown) {
+      const double x0 = c.x, x1 = c.x + 1.0, y0 = c.y, y1 = c.y + 1.0;
+      s.step_other = s.step_other.min(((x0 - s.px).max(s.px - x1).max(0.0).square() +
+                                       (y0 - s.py).max(s.py - y1).max(0.0).square())
+                                          .sqrt());
+    }
+    for (const Disc& d : view.moving) {
+      const double cx = d.centre.x + d.velocity.x * k * p.dt;
+      const double cy = d.centre.y + d.velocity.y * k * p.dt;
+      s.step_other = s.step_other.min(((s.px - cx).square() + (s.py - cy).square()).sqrt() -
+                                      d.radius - p.dynamic_margin);
+    }
+    const auto kk = static_cast<double>(k);
+    s.hit_static =
+        (s.step_static < threshold_static && s.hit_static > steps).select(kk, s.hit_static);
+    s.hit_other = (s.step_other < threshold_other && s.hit_other > steps).select(kk, s.hit_other);
+    s.min_static = s.min_static.min(s.step_static);
+    s.min_other = s.min_other.min(s.step_other);
+    for (int j = 0; j < goal_count; ++j) {
+      // passes_goal() on every rollout point at once.
+      const Point g = goals[static_cast<std::size_t>(j)];
+      const Point a = j == 0 ? target.from : goals[static_cast<std::size_t>(j - 1)];
+      const double dx = g.x - a.x, dy = g.y - a.y;
+      const auto d2 = (s.px - g.x).square() + (s.py - g.y).square();
+      s.goal_index =
+          (s.goal_index == j &&
+           (d2 <= tol2 || (d2 <= radius2 && (s.px - g.x) * dx + (s.py - g.y) * dy >= 0.0)))
+              .select(static_cast<double>(j + 1), s.goal_index);
+    }
+  }
+
+  // Score terms. Heading (Fox): pi - |angle between the end heading and the goal direction seen
+  // from the end point| (paper 003 Head / Heading, paper 004 PHead).
+  const double horizon = steps * p.dt;
+  for (int i = 0; i < n; ++i) {
+    const auto gi = static_cast<int>(s.goal_index[i]);
+    if (gi >= goal_count) {
+      s.heading[i] = kPi;  // the rollout reaches the goal
+      continue;
+    }
+    Point goal = goals[static_cast<std::size_t>(gi)];
+    if (target.aim_segment)
+      goal = aim_point(gi == 0 ? target.from : goals[static_cast<std::size_t>(gi - 1)], goal,
+                       {s.px[i], s.py[i]}, target.lookahead);
+    const double end_theta = pose.theta + s.w[i] * horizon;
+    const double to_goal = std::atan2(goal.y - s.py[i], goal.x - s.px[i]);
+    s.heading[i] = kPi - std::abs(wrap_angle(to_goal - end_theta));
+  }
+  s.velocity = s.v;
+  // dist(v, w) of eq. 10: the arc length (m) to the last rollout point before a hit at step k,
+  // less the v dt the robot drives before the next control step can brake. Without that
+  // reserve the braking chain loses up to one rollout step per control step and a robot at
+  // speed runs out of admissible pairs before the obstacle.
+  auto arc = [&](int i, double k) {
+    return k <= steps ? std::max(0.0, s.v[i] * (k - 2.0) * p.dt) : kInf;
+  };
+  if (p.dist_mode == DwaParams::DistMode::collision) {
+    for (int i = 0; i < n; ++i) {
+      s.dist[i] = std::min(p.dist_cap, arc(i, s.hit_static[i]));
+      s.dist_dyna[i] = std::min(p.dist_cap, arc(i, s.hit_other[i]));
+    }
+  } else {
+    s.dist = (s.min_static.min(p.static_clearance_cap) - p.robot_radius).max(0.0);
+    s.dist_dyna = (s.min_other - p.robot_radius).max(0.0);
+  }
+  if (p.score != DwaScore::improved_003) s.dist = s.dist.min(s.dist_dyna);
+
+  // V_a (eq. 10): dist(v, w) = arc length to the last rollout point before the first hit.
+  bool any = false, moving = false;
+  for (int i = 0; i < n; ++i) {
+    const double stop = arc(i, std::min(s.hit_static[i], s.hit_other[i]));  // metres
+    bool ok = s.v[i] <= std::sqrt(2.0 * stop * p.acc_v) + 1e-12;
+    if (p.va_omega) ok = ok && std::abs(s.w[i]) <= std::sqrt(2.0 * stop * p.acc_w) + 1e-12;
+    s.admissible[i] = ok;
+    any = any || ok;
+    moving = moving || (ok && s.v[i] > 1e-9);
+  }
+  out.any_admissible = any;
+  out.any_moving = moving;
+  if (!any) {
+    // No admissible pair: brake as hard as the window allows, keeping the curvature of the
+    // current motion (the arc the last admissible pair was checked along).
+    out.v = win.v_lo;
+    out.w = std::clamp(v > 1e-9 ? w * win.v_lo / v : 0.0, win.w_lo, win.w_hi);
+    return out;
+  }
+
+  // Normalise each term by its sum over the admissible set, weight, add.
+  auto scale = [&](const Eigen::ArrayXd& term, double weight) {
+    const double sum = s.admissible.select(term, 0.0).sum();
+    return sum > 0.0 ? weight / sum : 0.0;
+  };
+  const DwaWeights& wt = p.weights;
+  const double dyn_weight = p.score == DwaScore::improved_003 ? wt.dynamic : 0.0;
+  const double ch = scale(s.heading, wt.heading), cv = scale(s.velocity, wt.velocity),
+               cd = scale(s.dist, wt.clearance), cy = scale(s.dist_dyna, dyn_weight);
+  s.score = ch * s.heading + cv * s.velocity + cd * s.dist + cy * s.dist_dyna;
+
+  if (p.smoothing) {
+    // Sigma: a [1 2 1] x [1 2 1] kernel over the (v, w) sample grid, admissible neighbours only,
+    // so a pair whose neighbours are also good wins (Fox et al.: more side clearance).
+    for (int iv = 0; iv < nv; ++iv)
+      for (int iw = 0; iw < nw; ++iw) {
+        double sum = 0.0, weight = 0.0;
+        for (int dv = -1; dv <= 1; ++dv)
+          for (int dw = -1; dw <= 1; ++dw) {
+            const int jv = iv + dv, jw = iw + dw;
+            if (jv < 0 || jv >= nv || jw < 0 || jw >= nw) continue;
+            const int j = jv * nw + jw;
+            if (!s.admissible[j]) continue;
+            const double k = (dv == 0 ? 2.0 : 1.0) * (dw == 0 ? 2.0 : 1.0);
+            sum += k * s.score[j];
+            weight += k;
+          }
+        s.smoothed[iv * nw + iw] = weight > 0.0 ? sum / weight : 0.0;
+      }
+    s.score = s.smoothed;
+  }
+
+  // Best admissible pair; ties go to the first in sample order (deterministic).
+  int best = -1;
+  for (int i = 0; i < n; ++i)
+    if (s.admissible[i] && (best < 0 || s.score[i] > s.score[best])) best = i;
+  out.v = s.v[best];
+  out.w = s.w[best];
+  out.stop_distance = arc(best, std::min(s.hit_static[best], s.hit_other[best]));
+  return out;
+}
+
+}  // namespace agv

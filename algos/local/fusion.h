@@ -1,0 +1,35 @@
+#pragma once
+// Global grid planner + DWA fusion (paper 003 section 4, paper 004 section 3.4; PLANNERS.md "DWA
+// local planner and the fusion planners"), and pure DWA.
+//
+// A run: (1) a world is generated for the map (algos/local/dwa_world.h): unknown static cells on or
+// near the map's reference path (classic A*, no_corner_cut, the same for every planner) and
+// moving discs; (2) the global planner, any registered grid planner chosen by name, plans on
+// the known grid (its corner rule forced to no_corner_cut by default: a disc robot cannot pass
+// between diagonal obstacles); its key points (Ramer-Douglas-Peucker with key_point_tolerance,
+// on cell-centre paths exactly the turning points after collinear removal) are the DWA's
+// successive local goals; (3) the robot drives through them (algos/local/fusion_drive.h, which lists
+// our additions to the papers' loop). The planner reports the executed trajectory, the moving
+// obstacles' tracks and the unknown cells (PlanResult::trajectory) and the engine judges it
+// (engine/trajectory_judge.h). `path` is the executed positions, so the path metrics apply.
+//
+// Pure DWA (`dwa`): the same world and loop with start and goal as the only key points,
+// Fox's heading toward the goal, no turn speed limit.
+
+#include "algos/local/fusion_drive.h"
+#include "algos/registry.h"
+
+namespace agv {
+
+// Registered as dwa, fusion_astar_dwa, fusion_alt_dwa, fusion_kin_dwa (algos/registry.cpp).
+PlannerInfo dwa_planner();               // pure DWA toward the goal
+PlannerInfo fusion_astar_dwa_planner();  // classic A* + classic DWA (the papers' baseline)
+PlannerInfo fusion_alt_dwa_planner();    // alternative A* + improved DWA (paper 003)
+PlannerInfo fusion_kin_dwa_planner();    // kinematic A* + following DWA (paper 004)
+
+// The control-loop options a fusion planner's parameters resolve to (tests drive hand-made
+// worlds with them, algos/local/fusion_drive.h). `params` resolved against one of the registrations
+// above; has_global false for `dwa`.
+FusionOptions fusion_options(const Params& params, bool has_global);
+
+}  // namespace agv

@@ -1,0 +1,86 @@
+#pragma once
+// Post-processing any grid planner can apply through its parameters (issue 3), so a user can run
+// classic A* + B-spline as easily as the papers' own pipelines. The steps themselves live in
+// algos/postprocess/path_simplify.h and algos/postprocess/path_curves.h (one implementation each); this file only names
+// them as parameters and chains them:
+//
+//   search path (cell centres) -> shortcut (`shortcut`, under `shortcut_margin`)
+//                              -> smoothing (`smoothing`: none | bezier | bspline)
+//
+// Every step tests collisions with the planner's own corner rule (SightRule::cells(rule), or
+// SightRule::margin(d, rule)), so the result validates under the rule the planner reports.
+
+#include <string>
+#include <vector>
+
+#include "core/line_of_sight.h"
+#include "core/params.h"
+#include "algos/postprocess/path_curves.h"
+#include "algos/planner.h"
+#include "core/corner_rule.h"
+#include "core/grid.h"
+
+namespace agv {
+
+enum class ShortcutMode {
+  none,
+  collinear,        // collinear removal only (paper 000 step 2)
+  turning_points,   // collinear + turning-point removal (paper 000 step 3)
+  greedy,           // collinear + farthest-visible greedy shortcut
+  forward,          // paper 002 forward key-point search on the midpoint-refined path
+  from_goal,        // paper 004 secondary redundancy removal (greedy from the goal)
+  direct_midpoint,  // paper 003 direct and midpoint shortcuts
+};
+enum class SmoothingMode { none, bezier, bspline };
+
+struct PostprocessOptions {
+  ShortcutMode shortcut = ShortcutMode::none;
+  double shortcut_margin = 0.0;  // cells; 0 = SightRule::cells
+  SmoothingMode smoothing = SmoothingMode::none;
+  BezierOptions bezier;
+  BsplineOptions bspline;
+};
+
+// `shortcut`, `shortcut_margin`.
+std::vector<ParamSpec> shortcut_params(ShortcutMode default_mode);
+// `smoothing`, `curve_step`, `bezier_distance`, `bezier_points`.
+std::vector<ParamSpec> smoothing_params(SmoothingMode default_mode);
+// Read back what the specs above declared (each reader only the names it declares).
+void read_shortcut_params(const Params& params, PostprocessOptions& options);
+void read_smoothing_params(const Params& params, PostprocessOptions& options);
+
+// The collision rule of a step: cells under the corner rule, or that plus a margin in cells.
+SightRule sight_rule(CornerRule rule, double margin);
+
+// A polyline in the making. While it is a subsequence of `dense` (the search's cell path),
+// `kept` holds its indices, so the B-spline refit can re-insert removed cells; a step that moves
+// or adds points clears `kept` and the polyline stands alone.
+struct WorkingPath {
+  std::vector<Point> dense;
+  std::vector<int> kept;
+  std::vector<Point> points;
+
+  explicit WorkingPath(std::vector<Point> path);
+  // Keeps points[local[0]], points[local[1]], ... (indices into `points`).
+  void keep(const std::vector<int>& local);
+  // Replaces the polyline by free-standing points.
+  void replace(std::vector<Point> path);
+};
+
+void apply_shortcut(const Grid& grid, ShortcutMode mode, const SightRule& sight, WorkingPath& path);
+// `sight`: the rule the curve must be free under (the planner's cells rule).
+void apply_smoothing(const Grid& grid, const PostprocessOptions& options, const SightRule& sight,
+                     WorkingPath& path);
+
+// The last step of every pipeline: records the waypoint count before curve sampling as the extra
+// metric "key_points", applies the smoothing (phase "smoothing") under the result's corner rule
+// and moves the polyline into result.path.
+void finish_path(const Grid& grid, const PostprocessOptions& options, WorkingPath& path,
+                 PlanResult& result);
+
+// Both steps on a successful search result, under its corner rule, timed as the phases
+// "postprocess" (shortcut) and "smoothing"; a failed result, or options that ask for nothing,
+// leave the result alone.
+void apply_postprocessing(const Grid& grid, const PostprocessOptions& options, PlanResult& result);
+
+}  // namespace agv

@@ -1,0 +1,113 @@
+#include "algos/sampling/birrt.h"
+
+#include <memory>
+#include <utility>
+
+#include "algos/sampling/rrt_tree.h"
+#include "algos/sampling/sampling_params.h"
+
+namespace agv {
+
+namespace {
+
+struct BirrtScratch {
+  RrtTree from_start;
+  RrtTree from_goal;
+};
+
+class BirrtPlanner final : public Planner {
+ public:
+  explicit BirrtPlanner(const Params& params) : settings_(rrt_settings_of(params)) {}
+
+  PlanResult plan(const PlanRequest& request) const override {
+    const Grid& grid = request.grid;
+    PlanResult result;
+    result.rule = settings_.sight.corners;
+    if (request.start == request.goal) {
+      result.success = true;
+      result.path = {centre(request.start)};
+      result.expanded_nodes = 1;
+      return result;
+    }
+    auto& scratch = request.scratch.get<BirrtScratch>();
+    RrtTree* a = &scratch.from_start;  // the tree that extends this iteration
+    RrtTree* b = &scratch.from_goal;   // the tree that connects
+    const double width = grid.width();
+    const double height = grid.height();
+    int meet_a = -1;
+    int meet_b = -1;
+    long long iterations = 0;
+    bool timed_out = false;
+    {
+      PhaseTimer timer(result, "search");
+      a->reset(grid, centre(request.start), settings_.index);
+      b->reset(grid, centre(request.goal), settings_.index);
+      for (; iterations < settings_.max_iterations; ++iterations) {
+        if (iterations % kSamplingDeadlineInterval == 0 && request.deadline.expired()) {
+          timed_out = true;
+          break;
+        }
+        // Goal bias here means: aim at the other tree's root.
+        const Point target =
+            request.rng.chance(settings_.goal_bias)
+                ? b->point(0)
+                : Point{request.rng.uniform(0.0, width), request.rng.uniform(0.0, height)};
+        const Extension e = a->extend(grid, target, settings_.step, settings_.sight);
+        if (e.status != ExtendStatus::trapped) {
+          const Point q = a->point(e.node);
+          // CONNECT: ends within ceil(distance / step) extensions, each one step closer.
+          Extension c;
+          do {
+            c = b->extend(grid, q, settings_.step, settings_.sight);
+          } while (c.status == ExtendStatus::advanced);
+          if (c.status == ExtendStatus::reached) {
+            meet_a = e.node;
+            meet_b = c.node;
+            break;
+          }
+        }
+        std::swap(a, b);
+      }
+    }
+    result.expanded_nodes = scratch.from_start.size() + scratch.from_goal.size();
+    result.extra.emplace_back("iterations", static_cast<double>(iterations));
+    if (meet_a < 0) {
+      result.failure = Failure::limit;
+      result.message = timed_out ? "deadline passed before the trees met"
+                                 : "max_iterations samples drawn without the trees meeting";
+      return result;
+    }
+    // Both meeting nodes hold the same point: start tree root -> meet, then the goal tree from
+    // the meeting node's parent back to its root.
+    const bool a_is_start = a == &scratch.from_start;
+    const int meet_start = a_is_start ? meet_a : meet_b;
+    const int meet_goal = a_is_start ? meet_b : meet_a;
+    result.success = true;
+    scratch.from_start.append_path_from_root(meet_start, result.path);
+    for (int n = scratch.from_goal.parent(meet_goal); n >= 0; n = scratch.from_goal.parent(n))
+      result.path.push_back(scratch.from_goal.point(n));
+    return result;
+  }
+
+ private:
+  RrtSettings settings_;
+};
+
+}  // namespace
+
+PlannerInfo birrt_planner() {
+  PlannerInfo info;
+  info.name = "birrt";
+  info.summary = "Bi-RRT (RRT-Connect): start and goal trees alternate extend / connect";
+  info.source =
+      "PLANNERS.md Baselines; paper 000 Tables III-XIII (Bi-RRT column); Kuffner & LaValle 2000";
+  info.expanded_nodes_meaning = "nodes of both trees at the end of the plan (both roots included)";
+  info.stochastic = true;
+  info.params = rrt_params();
+  info.make = [](const Params& params) -> std::unique_ptr<Planner> {
+    return std::make_unique<BirrtPlanner>(params);
+  };
+  return info;
+}
+
+}  // namespace agv

@@ -1,0 +1,235 @@
+#include "algos/sampling/prm.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <nanoflann.hpp>
+#include <utility>
+#include <vector>
+
+#include "algos/sampling/sampling_params.h"
+#include "core/cell_geometry.h"
+
+namespace agv {
+
+namespace {
+
+// Rejection sampling draws at most this many points per requested sample, so a nearly full map
+// ends with fewer samples instead of looping (expected draws per sample: 1 / free fraction).
+constexpr long long kMaxDrawsPerSample = 64;
+
+constexpr int kStartNode = 0;
+constexpr int kGoalNode = 1;
+
+struct Cloud {
+  const std::vector<Point>* points;
+  std::size_t kdtree_get_point_count() const { return points->size(); }
+  double kdtree_get_pt(std::size_t i, std::size_t dim) const {
+    return dim == 0 ? (*points)[i].x : (*points)[i].y;
+  }
+  template <class Box>
+  bool kdtree_get_bbox(Box& /*box*/) const {
+    return false;
+  }
+};
+using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>,
+                                                   Cloud, 2, std::uint32_t>;
+
+// Per-thread buffers, reused from plan to plan.
+struct PrmScratch {
+  std::vector<Point> points;
+  std::vector<std::uint32_t> knn_index;
+  std::vector<double> knn_d2;
+  std::vector<std::uint64_t> pairs;  // candidate edges (lo << 32 | hi), lo < hi
+  std::vector<std::uint64_t> edges;  // the free ones
+  std::vector<int> offsets;          // CSR adjacency
+  std::vector<int> targets;
+  std::vector<double> dist;
+  std::vector<int> parent;
+  std::vector<std::pair<double, int>> heap;
+};
+
+class PrmPlanner final : public Planner {
+ public:
+  explicit PrmPlanner(const Params& params)
+      : samples_(params.integer("samples")),
+        k_(static_cast<std::size_t>(params.integer("k"))),
+        radius_(params.number("radius")),
+        sight_(segment_sight_of(params)) {}
+
+  PlanResult plan(const PlanRequest& request) const override {
+    PlanResult result;
+    result.rule = sight_.corners;
+    if (request.start == request.goal) {
+      result.success = true;
+      result.path = {centre(request.start)};
+      result.expanded_nodes = 1;
+      return result;
+    }
+    PrmScratch& s = request.scratch.get<PrmScratch>();
+    bool built = false;
+    {
+      PhaseTimer timer(result, "roadmap");
+      built = build_roadmap(request, s, result);
+    }
+    result.expanded_nodes = static_cast<std::int64_t>(s.points.size());
+    if (!built) {
+      result.failure = Failure::limit;
+      result.message = "deadline passed while building the roadmap";
+      return result;
+    }
+    bool found = false;
+    {
+      PhaseTimer timer(result, "search");
+      found = shortest_path(s);
+    }
+    if (!found) {
+      result.failure = Failure::limit;
+      result.message = "the roadmap does not connect start and goal (too few samples?)";
+      return result;
+    }
+    result.success = true;
+    for (int n = kGoalNode; n >= 0; n = s.parent[static_cast<std::size_t>(n)])
+      result.path.push_back(s.points[static_cast<std::size_t>(n)]);
+    std::reverse(result.path.begin(), result.path.end());
+    return result;
+  }
+
+ private:
+  // Samples, k-nearest candidate edges, line-of-sight checks, CSR adjacency. False when the
+  // deadline passed.
+  bool build_roadmap(const PlanRequest& request, PrmScratch& s, PlanResult& result) const {
+    const Grid& grid = request.grid;
+    s.points.clear();
+    s.points.push_back(centre(request.start));
+    s.points.push_back(centre(request.goal));
+    // Uniform over the free space: uniform over the map, rejected inside obstacle cells.
+    const double width = grid.width();
+    const double height = grid.height();
+    const long long max_draws = samples_ * kMaxDrawsPerSample;
+    long long accepted = 0;
+    for (long long draw = 0; draw < max_draws && accepted < samples_; ++draw) {
+      if (draw % kSamplingDeadlineInterval == 0 && request.deadline.expired()) return false;
+      const Point p{request.rng.uniform(0.0, width), request.rng.uniform(0.0, height)};
+      if (grid.blocked(static_cast<int>(p.x), static_cast<int>(p.y))) continue;
+      s.points.push_back(p);
+      ++accepted;
+    }
+
+    const std::size_t n = s.points.size();
+    const Cloud cloud{&s.points};
+    const KdTree tree(2, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+    const std::size_t want = std::min(k_ + 1, n);  // + 1: the query point finds itself
+    s.knn_index.resize(want);
+    s.knn_d2.resize(want);
+    const double radius2 = radius_ * radius_;
+    s.pairs.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double query[2] = {s.points[i].x, s.points[i].y};
+      const std::size_t found = tree.knnSearch(query, want, s.knn_index.data(), s.knn_d2.data());
+      for (std::size_t m = 0; m < found; ++m) {
+        const std::uint32_t j = s.knn_index[m];
+        if (j == i || (radius_ > 0.0 && s.knn_d2[m] > radius2)) continue;
+        const auto lo = static_cast<std::uint64_t>(std::min<std::size_t>(i, j));
+        const auto hi = static_cast<std::uint64_t>(std::max<std::size_t>(i, j));
+        s.pairs.push_back(lo << 32 | hi);
+      }
+    }
+    // An edge found from both ends is checked once.
+    std::sort(s.pairs.begin(), s.pairs.end());
+    s.pairs.erase(std::unique(s.pairs.begin(), s.pairs.end()), s.pairs.end());
+
+    s.edges.clear();
+    s.offsets.assign(n + 1, 0);
+    for (std::size_t e = 0; e < s.pairs.size(); ++e) {
+      if (e % kSamplingDeadlineInterval == 0 && request.deadline.expired()) return false;
+      const std::uint64_t pair = s.pairs[e];
+      const std::size_t a = pair >> 32;
+      const std::size_t b = pair & 0xFFFFFFFFU;
+      if (!segment_free(grid, s.points[a], s.points[b], sight_)) continue;
+      s.edges.push_back(pair);
+      ++s.offsets[a + 1];
+      ++s.offsets[b + 1];
+    }
+    for (std::size_t i = 0; i < n; ++i) s.offsets[i + 1] += s.offsets[i];
+    s.targets.resize(static_cast<std::size_t>(s.offsets[n]));
+    // Fill with a running cursor per node (`parent` is unused until the search: the cursors).
+    s.parent.assign(s.offsets.begin(), s.offsets.end() - 1);
+    for (const std::uint64_t pair : s.edges) {
+      const auto a = static_cast<int>(pair >> 32);
+      const auto b = static_cast<int>(pair & 0xFFFFFFFFU);
+      s.targets[static_cast<std::size_t>(s.parent[static_cast<std::size_t>(a)]++)] = b;
+      s.targets[static_cast<std::size_t>(s.parent[static_cast<std::size_t>(b)]++)] = a;
+    }
+    result.extra.emplace_back("roadmap_edges", static_cast<double>(s.edges.size()));
+    result.extra.emplace_back("edge_checks", static_cast<double>(s.pairs.size()));
+    return true;
+  }
+
+  // Dijkstra on the roadmap (binary heap, lazy deletion; ties to the lower node index).
+  static bool shortest_path(PrmScratch& s) {
+    const std::size_t n = s.points.size();
+    s.dist.assign(n, std::numeric_limits<double>::infinity());
+    s.parent.assign(n, -1);
+    s.heap.clear();
+    const auto later = std::greater<std::pair<double, int>>();
+    s.dist[kStartNode] = 0.0;
+    s.heap.emplace_back(0.0, kStartNode);
+    while (!s.heap.empty()) {
+      std::pop_heap(s.heap.begin(), s.heap.end(), later);
+      const auto [d, u] = s.heap.back();
+      s.heap.pop_back();
+      const auto su = static_cast<std::size_t>(u);
+      if (d > s.dist[su]) continue;  // stale entry
+      if (u == kGoalNode) return true;
+      for (int e = s.offsets[su]; e < s.offsets[su + 1]; ++e) {
+        const int v = s.targets[static_cast<std::size_t>(e)];
+        const auto sv = static_cast<std::size_t>(v);
+        const double dv = d + point_distance(s.points[su], s.points[sv]);
+        if (dv < s.dist[sv]) {
+          s.dist[sv] = dv;
+          s.parent[sv] = u;
+          s.heap.emplace_back(dv, v);
+          std::push_heap(s.heap.begin(), s.heap.end(), later);
+        }
+      }
+    }
+    return false;
+  }
+
+  long long samples_;
+  std::size_t k_;
+  double radius_;
+  SightRule sight_;
+};
+
+}  // namespace
+
+PlannerInfo prm_planner() {
+  PlannerInfo info;
+  info.name = "prm";
+  info.summary = "PRM: uniform free samples, k-nearest roadmap, Dijkstra on the roadmap";
+  info.source = "PLANNERS.md Baselines; paper 000 Tables III-XIII (PRM column); Kavraki 1996";
+  info.expanded_nodes_meaning =
+      "roadmap nodes: samples drawn in free space plus the start and goal centres";
+  info.stochastic = true;
+  info.params = {
+      ParamSpec::integer("samples", 500, 0, 10000000,
+                         "free-space samples (paper 000 gives no value); rejection sampling "
+                         "stops after 64 draws per sample, so a nearly full map may get fewer"),
+      ParamSpec::integer("k", 10, 1, 10000, "nearest neighbours each node tries to connect to"),
+      ParamSpec::number("radius", 0.0, 0.0, 1e6,
+                        "connection radius in cells: neighbours farther away are not tried; "
+                        "0 = unlimited"),
+      segment_corner_rule_param(CornerRule::no_corner_cut),
+  };
+  info.make = [](const Params& params) -> std::unique_ptr<Planner> {
+    return std::make_unique<PrmPlanner>(params);
+  };
+  return info;
+}
+
+}  // namespace agv

@@ -1,0 +1,107 @@
+#include "algos/sampling/rrt.h"
+
+#include <cmath>
+#include <memory>
+
+#include "algos/sampling/rrt_tree.h"
+#include "algos/sampling/sampling_params.h"
+
+namespace agv {
+
+namespace {
+
+struct RrtScratch {
+  RrtTree tree;
+};
+
+class RrtPlanner final : public Planner {
+ public:
+  explicit RrtPlanner(const Params& params)
+      : settings_(rrt_settings_of(params)), goal_radius_(params.number("goal_radius")) {}
+
+  PlanResult plan(const PlanRequest& request) const override {
+    const Grid& grid = request.grid;
+    const Point start = centre(request.start);
+    const Point goal = centre(request.goal);
+    PlanResult result;
+    result.rule = settings_.sight.corners;
+    if (request.start == request.goal) {
+      result.success = true;
+      result.path = {start};
+      result.expanded_nodes = 1;
+      return result;
+    }
+    RrtTree& tree = request.scratch.get<RrtScratch>().tree;
+    const double radius = goal_radius_ > 0.0 ? goal_radius_ : settings_.step;
+    const double width = grid.width();
+    const double height = grid.height();
+    int reached = -1;
+    long long iterations = 0;
+    bool timed_out = false;
+    {
+      PhaseTimer timer(result, "search");
+      tree.reset(grid, start, settings_.index);
+      for (; iterations < settings_.max_iterations; ++iterations) {
+        if (iterations % kSamplingDeadlineInterval == 0 && request.deadline.expired()) {
+          timed_out = true;
+          break;
+        }
+        // Uniform over the whole map, obstacles included (the classic RRT sample space): a
+        // sample inside an obstacle still pulls the tree towards it.
+        const Point target =
+            request.rng.chance(settings_.goal_bias)
+                ? goal
+                : Point{request.rng.uniform(0.0, width), request.rng.uniform(0.0, height)};
+        const Extension e = tree.extend(grid, target, settings_.step, settings_.sight);
+        if (e.status == ExtendStatus::trapped) continue;
+        const Point p = tree.point(e.node);
+        if (p == goal) {
+          reached = e.node;
+          break;
+        }
+        if (std::hypot(goal.x - p.x, goal.y - p.y) <= radius &&
+            segment_free(grid, p, goal, settings_.sight)) {
+          reached = tree.add(goal, e.node);
+          break;
+        }
+      }
+    }
+    result.expanded_nodes = tree.size();
+    result.extra.emplace_back("iterations", static_cast<double>(iterations));
+    if (reached < 0) {
+      result.failure = Failure::limit;
+      result.message = timed_out ? "deadline passed before the tree reached the goal"
+                                 : "max_iterations samples drawn without reaching the goal";
+      return result;
+    }
+    result.success = true;
+    tree.append_path_from_root(reached, result.path);
+    return result;
+  }
+
+ private:
+  RrtSettings settings_;
+  double goal_radius_;
+};
+
+}  // namespace
+
+PlannerInfo rrt_planner() {
+  PlannerInfo info;
+  info.name = "rrt";
+  info.summary = "RRT: one tree from the start, fixed-step extension, goal bias";
+  info.source = "PLANNERS.md Baselines; paper 000 Tables III-XIII (RRT column); LaValle 1998";
+  info.expanded_nodes_meaning = "tree nodes at the end of the plan (root and goal included)";
+  info.stochastic = true;
+  info.params = rrt_params();
+  info.params.push_back(ParamSpec::number(
+      "goal_radius", 0.0, 0.0, 1e6,
+      "a new node within this distance (cells) of the goal is joined to it directly when that "
+      "segment is free; 0 = the step size"));
+  info.make = [](const Params& params) -> std::unique_ptr<Planner> {
+    return std::make_unique<RrtPlanner>(params);
+  };
+  return info;
+}
+
+}  // namespace agv

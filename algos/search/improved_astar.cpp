@@ -1,0 +1,141 @@
+#include "algos/search/improved_astar.h"
+
+// Internal part (section 4.1), a policy of the one search core (algos/search/search_core.h):
+// - neighbour rule `no_squeeze` (Algorithm 1, Node_traversal()): a diagonal is refused only when
+//   both adjacent cardinal cells are obstacles;
+// - heuristic octile with D_diag = diagonal_cost = 1.4 (eq. 7 read the sane way; the printed
+//   weights are `heuristic: octile_as_printed`), g with diagonal moves of 1.4 (eq. 6);
+// - turning weight (eq. 8-10): f = g + C * h, C = turn_weight (1.2) when parent -> node -> child
+//   turns (cross product K != 0, i.e. the move into the child differs from the move into the
+//   node), else 1; no turn is charged at the start, which has no parent.
+// External part (section 4.2), on the search path, each step free under SightRule::cells(rule):
+// 1. a midpoint between every two consecutive nodes (Algorithm 2 lines 1-12, eq. 11);
+// 2. forward key-point search (Algorithm 2's intent): the next key point is the last point still
+//    in sight before the first one that is not;
+// 3. obstacle-avoidance adjustment (eq. 12-13): key points pushed L/2 from adjacent obstacles,
+//    points inserted where a segment passes closer than L to an obstacle centre;
+// 4. quadratic Bezier corners (eq. 14, `smoothing: bezier`), shrunk where they would hit.
+// expanded_nodes: cells taken off the open list and closed (the goal included).
+
+#include <memory>
+
+#include "algos/search/grid_search_params.h"
+#include "algos/postprocess/path_curves.h"
+#include "algos/postprocess/path_simplify.h"
+#include "algos/postprocess/postprocess_params.h"
+#include "algos/search/search_core.h"
+
+namespace agv {
+
+namespace {
+
+template <class H>
+struct TurnWeightedPolicy : PolicyDefaults {
+  TurnWeightedPolicy(H heuristic_fn, Cell goal, double weight)
+      : h_fn(heuristic_fn), goal_cell(goal), turn_weight(weight) {}
+  double heuristic(int x, int y, int /*index*/) const {
+    return h_fn(std::abs(goal_cell.x - x), std::abs(goal_cell.y - y));
+  }
+  // Eq. 8-10: K != 0 exactly when the two moves differ (a reversal would re-enter the closed
+  // parent, so it never reaches here).
+  double key(double g, double h, int dir_in, int dir_out) const {
+    const bool turns = dir_in != kNoDirection && dir_in != dir_out;
+    return g + (turns ? turn_weight : 1.0) * h;
+  }
+  H h_fn;
+  Cell goal_cell;
+  double turn_weight;
+};
+
+class ImprovedAStarPlanner final : public Planner {
+ public:
+  ImprovedAStarPlanner(const Params& params, bool external)
+      : setup_(grid_search_setup_of(params)),
+        heuristic_(heuristic_of(params)),
+        turn_weight_(params.number("turn_weight")),
+        external_(external) {
+    read_smoothing_params(params, post_);
+    if (external_) {
+      avoid_offset_ = params.number("avoid_offset");
+      avoid_near_ = params.number("avoid_near");
+    }
+  }
+
+  PlanResult plan(const PlanRequest& request) const override {
+    PlanResult result = with_heuristic(heuristic_, setup_.diagonal_cost, [&](auto h) {
+      return plan_grid_search(
+          request, setup_, TurnWeightedPolicy<decltype(h)>(h, request.goal, turn_weight_));
+    });
+    if (!result.success) return result;
+    WorkingPath path(std::move(result.path));
+    if (external_) {
+      PhaseTimer timer(result, "postprocess");
+      const SightRule sight = SightRule::cells(setup_.rule);
+      std::vector<Point> refined = path.points;
+      insert_midpoints(refined);                                                // step 1
+      std::vector<Point> keys = select_points(refined, forward_keep(request.grid, refined, sight));
+      avoid_obstacles(request.grid, keys, sight, avoid_offset_, avoid_near_);  // eq. 12-13
+      path.replace(std::move(keys));
+    }
+    finish_path(request.grid, post_, path, result);  // step 4: Bezier corners
+    return result;
+  }
+
+ private:
+  GridSearchSetup setup_;
+  Heuristic heuristic_;
+  double turn_weight_;
+  bool external_;
+  double avoid_offset_ = 0.5;
+  double avoid_near_ = 1.0;
+  PostprocessOptions post_;
+};
+
+std::vector<ParamSpec> internal_params() {
+  return {corner_rule_param(CornerRule::no_squeeze), heuristic_param(Heuristic::octile),
+          diagonal_cost_param(1.4),
+          ParamSpec::number("turn_weight", 1.2, 1.0, 10.0,
+                            "C of eq. 9-10: the heuristic's weight when parent -> node -> child "
+                            "turns (1 = no turning cost)")};
+}
+
+}  // namespace
+
+PlannerInfo improved_astar_internal_planner() {
+  PlannerInfo info;
+  info.name = "improved_astar_internal";
+  info.summary = "paper 002 internal improved A*: no_squeeze, octile (D_diag 1.4), turning "
+                 "weight 1.2";
+  info.source = "paper 002 section 4.1 (Algorithm 1, eq. 6-10), Table 4; PLANNERS.md";
+  info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
+  info.params = internal_params();
+  for (auto& spec : smoothing_params(SmoothingMode::none)) info.params.push_back(std::move(spec));
+  info.make = [](const Params& params) -> std::unique_ptr<Planner> {
+    return std::make_unique<ImprovedAStarPlanner>(params, false);
+  };
+  return info;
+}
+
+PlannerInfo improved_astar_planner() {
+  PlannerInfo info;
+  info.name = "improved_astar";
+  info.summary = "paper 002 improved A*: the internal search, then midpoints, forward key "
+                 "points, obstacle-avoidance adjustment and quadratic Bezier corners";
+  info.source = "paper 002 sections 4.1-4.2 (Algorithms 1-2, eq. 6-14), Table 5; PLANNERS.md";
+  info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
+  info.params = internal_params();
+  info.params.push_back(ParamSpec::number(
+      "avoid_offset", 0.5, 0.0, 2.0,
+      "eq. 13: how far key points are pushed from nearby obstacles, cells (L/2)"));
+  info.params.push_back(ParamSpec::number(
+      "avoid_near", 1.0, 0.0, 3.0,
+      "section 4.2 step 3: a segment passing closer than this to an obstacle centre gets a point "
+      "inserted at that obstacle's pushed vertex, cells (L)"));
+  for (auto& spec : smoothing_params(SmoothingMode::bezier)) info.params.push_back(std::move(spec));
+  info.make = [](const Params& params) -> std::unique_ptr<Planner> {
+    return std::make_unique<ImprovedAStarPlanner>(params, true);
+  };
+  return info;
+}
+
+}  // namespace agv

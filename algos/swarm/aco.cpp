@@ -1,0 +1,335 @@
+#include "algos/swarm/aco.h"
+
+// Choices the papers leave open, fixed here:
+// - Pheromone lives on cells (one value per cell of the padded grid), and a move is scored by
+//   the cell it enters: weight = tau(n)^alpha * eta(n)^beta, eta(n) = 1 / Euclidean distance
+//   (cells) from n's centre to the goal's centre. The goal itself (eta infinite) is entered as
+//   soon as it is an allowed move.
+// - Moves: 8-connected under corner_rule (default allow: the "traditional" grid of paper 002's
+//   comparison). Each ant keeps a tabu list (no cell visited twice); an ant with no allowed,
+//   unvisited neighbour is in a dead end and dies (no backtracking, no deposit).
+// - Update per iteration (ant-cycle): tau <- (1 - evaporation) * tau, then every ant that reached
+//   the goal adds Q / L to each cell of its path (L: its length in cells). All ants of an
+//   iteration walk on the pheromone of the previous one.
+// - The result is the shortest path any ant found over all iterations (first found on ties).
+//
+// Evaporation scales every cell alike, so tau = scale * stored with one shared `scale`: an
+// iteration multiplies scale only, a deposit adds Q / L / scale to `stored`, and each cell caches
+// stored^alpha * eta^beta (a uniform factor cancels in the roulette); only deposits recompute a
+// cell's weight. Cells are initialised lazily, by a per-plan stamp, on first sight.
+
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "algos/search/grid_search_params.h"
+#include "algos/search/heuristics.h"
+#include "core/corner_rule.h"
+
+namespace agv {
+
+namespace {
+
+// Below this the shared scale is folded into every seen cell, long before any value can
+// under- or overflow.
+constexpr double kRenormaliseBelow = 1e-30;
+// Deadline poll period in ant steps; a power of two.
+constexpr std::int64_t kStepDeadlineInterval = 1024;
+
+struct AcoCell {
+  double stored = 0.0;      // pheromone / scale
+  double eta_pow = 0.0;     // eta^beta
+  double weight = 0.0;      // stored^alpha * eta^beta
+  std::uint32_t seen = 0;   // == plan stamp: the fields above belong to this plan
+  std::uint32_t visit = 0;  // == ant stamp: visited by the current ant
+};
+
+struct AcoScratch {
+  std::vector<AcoCell> cells;  // padded grid
+  std::uint32_t plan_stamp = 0;
+  std::uint32_t ant_stamp = 0;
+  std::vector<int> walk;     // the current ant's cells
+  std::vector<int> arrived;  // cells of this iteration's successful walks, concatenated
+  std::vector<std::size_t> arrived_end;
+  std::vector<double> arrived_length;
+  std::vector<int> best;
+};
+
+struct AcoSettings {
+  long long ants = 0;
+  long long iterations = 0;
+  double evaporation = 0.0;
+  double alpha = 0.0;
+  double beta = 0.0;
+  double q = 0.0;
+  double initial_pheromone = 0.0;
+  CornerRule rule = CornerRule::allow;
+};
+
+class Colony {
+ public:
+  Colony(const PlanRequest& request, const AcoSettings& settings, AcoScratch& s)
+      : grid_(request.grid),
+        request_(request),
+        settings_(settings),
+        s_(s),
+        goal_(request.grid.index(request.goal)),
+        fresh_stored_(settings.initial_pheromone) {
+    const auto size = static_cast<std::size_t>(grid_.padded_size());
+    if (s_.cells.size() < size) {
+      s_.cells.assign(size, AcoCell{});
+      s_.plan_stamp = 0;
+      s_.ant_stamp = 0;
+    }
+    if (++s_.plan_stamp == 0) {
+      for (AcoCell& c : s_.cells) c.seen = 0;
+      s_.plan_stamp = 1;
+    }
+    for (int d = 0; d < 8; ++d) offset_[d] = kDx[d] + kDy[d] * grid_.stride();
+  }
+
+  // Returns false when the deadline passed.
+  bool run() {
+    const int start = grid_.index(request_.start);
+    for (long long it = 0; it < settings_.iterations; ++it) {
+      s_.arrived.clear();
+      s_.arrived_end.clear();
+      s_.arrived_length.clear();
+      for (long long ant = 0; ant < settings_.ants; ++ant) {
+        double length = 0.0;
+        const WalkEnd end = walk(start, length);
+        if (end == WalkEnd::deadline) return false;
+        if (end == WalkEnd::dead_end) continue;
+        ++successful_;
+        s_.arrived.insert(s_.arrived.end(), s_.walk.begin(), s_.walk.end());
+        s_.arrived_end.push_back(s_.arrived.size());
+        s_.arrived_length.push_back(length);
+        if (length < best_length_) {
+          best_length_ = length;
+          s_.best = s_.walk;
+        }
+      }
+      update_pheromone();
+      ++iterations_done_;
+    }
+    return true;
+  }
+
+  bool found() const { return best_length_ < kInfinity; }
+  std::int64_t steps() const { return steps_; }
+  long long successful() const { return successful_; }
+  long long iterations_done() const { return iterations_done_; }
+
+ private:
+  enum class WalkEnd { goal, dead_end, deadline };
+  static constexpr double kInfinity = 1e300;
+
+  AcoCell& cell(int index) {
+    AcoCell& c = s_.cells[static_cast<std::size_t>(index)];
+    if (c.seen != s_.plan_stamp) {
+      const Cell at = grid_.cell_of(index);
+      const double d = std::hypot(at.x - request_.goal.x, at.y - request_.goal.y);
+      c.seen = s_.plan_stamp;
+      c.stored = fresh_stored_;
+      c.eta_pow = d > 0.0 ? std::pow(1.0 / d, settings_.beta) : 0.0;  // the goal: never scored
+      c.weight = std::pow(c.stored, settings_.alpha) * c.eta_pow;
+    }
+    return c;
+  }
+
+  void next_ant() {
+    if (++s_.ant_stamp == 0) {
+      for (AcoCell& c : s_.cells) c.visit = 0;
+      s_.ant_stamp = 1;
+    }
+  }
+
+  WalkEnd walk(int start, double& length) {
+    next_ant();
+    s_.walk.clear();
+    s_.walk.push_back(start);
+    s_.cells[static_cast<std::size_t>(start)].visit = s_.ant_stamp;
+    const std::uint8_t* occupancy = grid_.occupancy();
+    const MoveTable& moves = move_table(settings_.rule);
+    int at = start;
+    for (;;) {
+      if (steps_ % kStepDeadlineInterval == 0 && request_.deadline.expired())
+        return WalkEnd::deadline;
+      std::uint8_t free_mask = 0;
+      for (int d = 0; d < 8; ++d)
+        if (occupancy[at + offset_[d]] == 0)
+          free_mask = static_cast<std::uint8_t>(free_mask | 1U << d);
+      const std::uint8_t allowed = moves[free_mask];
+      int next = -1;
+      int next_dir = -1;
+      int count = 0;
+      int candidate[8];
+      int candidate_dir[8];
+      double weight[8];
+      double total = 0.0;
+      for (int d = 0; d < 8 && next < 0; ++d) {
+        if (!(allowed & (1U << d))) continue;
+        const int n = at + offset_[d];
+        if (n == goal_) {
+          next = n;
+          next_dir = d;
+        } else if (s_.cells[static_cast<std::size_t>(n)].visit != s_.ant_stamp) {
+          candidate[count] = n;
+          candidate_dir[count] = d;
+          weight[count] = cell(n).weight;
+          total += weight[count];
+          ++count;
+        }
+      }
+      if (next < 0) {
+        if (count == 0) return WalkEnd::dead_end;
+        int pick = count - 1;
+        if (count > 1) {
+          if (total > 0.0 && std::isfinite(total)) {
+            // Roulette wheel: P(k) = weight[k] / total.
+            const double r = request_.rng.uniform01() * total;
+            double sum = 0.0;
+            for (int k = 0; k < count; ++k) {
+              sum += weight[k];
+              if (r < sum) {
+                pick = k;
+                break;
+              }
+            }
+          } else {
+            pick = static_cast<int>(request_.rng.below(static_cast<std::uint32_t>(count)));
+          }
+        }
+        next = candidate[pick];
+        next_dir = candidate_dir[pick];
+      }
+      ++steps_;
+      length += is_diagonal(next_dir) ? kSqrt2 : 1.0;
+      s_.walk.push_back(next);
+      if (next == goal_) return WalkEnd::goal;
+      s_.cells[static_cast<std::size_t>(next)].visit = s_.ant_stamp;
+      at = next;
+    }
+  }
+
+  void update_pheromone() {
+    scale_ *= 1.0 - settings_.evaporation;
+    std::size_t begin = 0;
+    for (std::size_t w = 0; w < s_.arrived_end.size(); ++w) {
+      const double deposit = settings_.q / s_.arrived_length[w] / scale_;
+      for (std::size_t i = begin; i < s_.arrived_end[w]; ++i) {
+        AcoCell& c = cell(s_.arrived[i]);
+        c.stored += deposit;
+        c.weight = std::pow(c.stored, settings_.alpha) * c.eta_pow;
+      }
+      begin = s_.arrived_end[w];
+    }
+    if (scale_ < kRenormaliseBelow) {
+      const double factor = std::pow(scale_, settings_.alpha);
+      for (AcoCell& c : s_.cells) {
+        if (c.seen != s_.plan_stamp) continue;
+        c.stored *= scale_;
+        c.weight *= factor;
+      }
+      fresh_stored_ *= scale_;
+      scale_ = 1.0;
+    }
+  }
+
+  const Grid& grid_;
+  const PlanRequest& request_;
+  const AcoSettings& settings_;
+  AcoScratch& s_;
+  const int goal_;
+  int offset_[8] = {};
+  double scale_ = 1.0;
+  double fresh_stored_;  // `stored` of a cell first seen now (initial pheromone / scale history)
+  double best_length_ = kInfinity;
+  std::int64_t steps_ = 0;
+  long long successful_ = 0;
+  long long iterations_done_ = 0;
+};
+
+class AcoPlanner final : public Planner {
+ public:
+  explicit AcoPlanner(const Params& params) {
+    settings_.ants = params.integer("ants");
+    settings_.iterations = params.integer("iterations");
+    settings_.evaporation = params.number("evaporation");
+    settings_.alpha = params.number("alpha");
+    settings_.beta = params.number("beta");
+    settings_.q = params.number("q");
+    settings_.initial_pheromone = params.number("initial_pheromone");
+    settings_.rule = corner_rule_of(params);
+  }
+
+  PlanResult plan(const PlanRequest& request) const override {
+    PlanResult result;
+    result.rule = settings_.rule;
+    if (request.start == request.goal) {
+      result.success = true;
+      result.path = {centre(request.start)};
+      return result;
+    }
+    AcoScratch& s = request.scratch.get<AcoScratch>();
+    Colony colony(request, settings_, s);
+    bool completed = false;
+    {
+      PhaseTimer timer(result, "search");
+      completed = colony.run();
+    }
+    result.expanded_nodes = colony.steps();
+    result.extra.emplace_back("successful_ants", static_cast<double>(colony.successful()));
+    result.extra.emplace_back("iterations", static_cast<double>(colony.iterations_done()));
+    if (!colony.found()) {
+      result.failure = Failure::limit;
+      result.message = completed ? "no ant reached the goal in any iteration"
+                                 : "deadline passed before any ant reached the goal";
+      return result;
+    }
+    result.success = true;
+    result.path.reserve(s.best.size());
+    for (const int index : s.best) result.path.push_back(centre(request.grid.cell_of(index)));
+    return result;
+  }
+
+ private:
+  AcoSettings settings_;
+};
+
+}  // namespace
+
+PlannerInfo aco_planner() {
+  PlannerInfo info;
+  info.name = "aco";
+  info.summary = "ant colony (Ant System) on the 8-connected grid, paper 002 Table 2 defaults";
+  info.source = "PLANNERS.md Baselines; paper 002 section 5, Table 2; Dorigo et al. 1996";
+  info.expanded_nodes_meaning = "ant steps: moves made by all ants of all iterations";
+  info.stochastic = true;
+  info.params = {
+      ParamSpec::integer("ants", 20, 1, 1000000, "ants per iteration (paper 002 Table 2: 20)"),
+      ParamSpec::integer("iterations", 150, 1, 10000000,
+                         "iterations; the best path over all of them is returned (paper 002 "
+                         "Table 2: 150)"),
+      ParamSpec::number("evaporation", 0.5, 0.0, 0.999,
+                        "pheromone evaporation rate rho per iteration (paper 002 Table 2: 0.5)"),
+      ParamSpec::number("alpha", 1.1, 0.0, 10.0,
+                        "pheromone factor: exponent of tau (paper 002 Table 2: 1.1)"),
+      ParamSpec::number("beta", 4.0, 0.0, 20.0,
+                        "heuristic factor: exponent of eta = 1 / distance to the goal (paper 002 "
+                        "Table 2: 4)"),
+      ParamSpec::number("q", 1.0, 1e-9, 1e9,
+                        "deposit constant Q: an ant that reached the goal adds Q / L (L: its path "
+                        "length in cells) to each cell of its path (paper 002 gives no value)"),
+      ParamSpec::number("initial_pheromone", 1.0, 1e-9, 1e9,
+                        "pheromone tau0 of every cell at the start (paper 002 gives no value)"),
+      corner_rule_param(CornerRule::allow),
+  };
+  info.make = [](const Params& params) -> std::unique_ptr<Planner> {
+    return std::make_unique<AcoPlanner>(params);
+  };
+  return info;
+}
+
+}  // namespace agv

@@ -1,0 +1,369 @@
+// GCC 12 flags the `_mm512_undefined_pd()` placeholders inside its own AVX-512 intrinsics once
+// Eigen's packet min/max/sqrt are inlined here (GCC bug 105593, a false positive; as in
+// algos/local/dwa.cpp). Before the includes: the warning is reported at the intrinsics header's lines.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include "algos/swarm/hma_star.h"
+
+// HMA* (paper 000 section 5, steps 8-13 and the pseudo-code; PLANNERS.md "HMA*"):
+// 1. MA* (the ma_star planner, run as configured here) gives the key nodes P0..Pm: its search
+//    path after collinear (eq. 5.1a) and turning-point (eq. 5.1b) removal.
+// 2. Sliding window n = 0 .. m-2: a swarm re-places P(n+1) between P(n) and P(n+2). A particle
+//    is one point; its cost (eq. 5.1g resolved) is |P(n) - x| + |x - P(n+2)|, or +inf when
+//    either segment is not free under SightRule::circles(r_obs, corner_rule) (the printed
+//    f = k * c with c = 0 on collision would make colliding particles the best).
+// 3. Initialisation eq. 5.1e over the window's bounding box widened by `window_margin` (clamped
+//    to the map): pos = lo + (hi - lo) r, r per coordinate; velocity eq. 5.1f: vmax * r.
+// 4. Each iteration (pseudo-code lines 21-29): costs; pbest / gbest (strictly smaller wins, so
+//    the earlier particle keeps a tie); opposition-based learning (step 11): x_o = lo + hi - x,
+//    the particle moves there when cost(x_o) <= cost(x), and pbest / gbest see its cost; the
+//    inertia weight (`inertia`); the velocity / position update eq. 4.2a with r1, r2 per particle
+//    and coordinate, velocities clamped to +-vmax, positions to the box.
+// 5. After T_max iterations P(n+1) := gbest when gbest is feasible and shorter than the window's
+//    current local path P(n) - P(n+1) - P(n+2); slide. Finally collinear and turning-point
+//    removal again (step 13's "nodes of the final route").
+// Every accepted change shortens the path and keeps its segments free under circles(r_obs), which
+// includes the cells test under the corner rule; the removals never lengthen it. So the result
+// is never longer than the MA* path and validates under MA*'s corner rule.
+// Swarm positions and velocities are Eigen arrays updated as whole arrays; each iteration's
+// (swarm x 2) segment checks go through the batched line of sight (core/line_of_sight_batch.h).
+// Random draws, all from the run's Rng in a fixed order: per window 2 x swarm positions and
+// 2 x swarm velocities, then per iteration rho (stochastic only) and 4 x swarm for r1, r2.
+// expanded_nodes: MA*'s expansions (cells closed by the search).
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/line_of_sight.h"
+#include "core/line_of_sight_batch.h"
+#include "algos/search/ma_star.h"
+#include "algos/postprocess/path_simplify.h"
+#include "core/cell_geometry.h"
+
+namespace agv {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A window's gbest replaces P(n+1) only when it shortens the local path by more than rounding.
+constexpr double kMinGain = 1e-9;
+// MA*'s parameters that HMA* declares and passes on (its smoothing ones it leaves at `none`).
+const char* const kMaStarParams[] = {"corner_rule", "diagonal_cost", "g_mode", "r_obs"};
+
+using Swarm = Eigen::Array<double, Eigen::Dynamic, 2>;
+using Row2 = Eigen::Array<double, 1, 2>;
+
+struct PsoSettings {
+  int swarm = 30;
+  int iterations = 50;
+  double c1 = 1.5;
+  double c2 = 1.5;
+  double w_max = 0.9;
+  double w_min = 0.4;
+  Inertia inertia = Inertia::stochastic;
+  double vmax_fraction = 0.2;
+  double margin = 1.0;
+  bool opposition = true;
+};
+
+// Per-thread buffers (request.scratch).
+using Mask = Eigen::Array<bool, Eigen::Dynamic, 1>;
+
+struct HmaScratch {
+  Swarm x, v, pbest, xo, r1, r2;
+  Eigen::ArrayXd length, length_o, cost, cost_o, pbest_cost;
+  Mask need;
+  std::vector<Point> points;
+  std::vector<Eigen::Index> index;
+  std::vector<std::uint8_t> free;
+};
+
+// One window's swarm.
+class WindowSwarm {
+ public:
+  WindowSwarm(const Grid& grid, const SightRule& sight, const PsoSettings& pso, Rng& rng,
+              HmaScratch& s)
+      : grid_(grid), sight_(sight), pso_(pso), rng_(rng), s_(s) {}
+
+  // The best point found for the middle of a - ? - b and its cost (+inf when none is feasible).
+  Point run(Point a, Point b, double& best_cost) {
+    a_ = a;
+    b_ = b;
+    const double w = grid_.width();
+    const double h = grid_.height();
+    lo_ << std::clamp(std::min(a.x, b.x) - pso_.margin, 0.0, w),
+        std::clamp(std::min(a.y, b.y) - pso_.margin, 0.0, h);
+    hi_ << std::clamp(std::max(a.x, b.x) + pso_.margin, 0.0, w),
+        std::clamp(std::max(a.y, b.y) + pso_.margin, 0.0, h);
+    const Row2 extent = hi_ - lo_;
+    const double vmax = pso_.vmax_fraction * std::hypot(extent(0), extent(1));
+    const Eigen::Index n = pso_.swarm;
+
+    // Eq. 5.1e over the widened box, eq. 5.1f.
+    fill_uniform(s_.x, n);
+    s_.x = (s_.x.rowwise() * extent).rowwise() + lo_;
+    fill_uniform(s_.v, n);
+    s_.v *= vmax;
+    s_.pbest = s_.x;
+    s_.pbest_cost.setConstant(n, kInf);
+    gbest_ = s_.x.row(0);
+    gbest_cost_ = kInf;
+
+    for (int j = 1; j <= pso_.iterations; ++j) {
+      const double previous = gbest_cost_;
+      // Line 23. Without opposition only a particle shorter than its pbest can change anything.
+      lengths(s_.x, s_.length);
+      if (pso_.opposition)
+        s_.need.setConstant(n, true);
+      else
+        s_.need = s_.length < s_.pbest_cost;
+      evaluate(s_.x, s_.length, s_.need, s_.cost);
+      remember_best();  // line 24
+      if (pso_.opposition) {
+        // Lines 25-28: the opposite point in the box; move when it is no worse. Its cost is
+        // needed where it decides the move (x feasible and x_o no longer) or may become a pbest
+        // (x infeasible: the particle moves anyway); elsewhere it changes nothing.
+        s_.xo = (-s_.x).rowwise() + (lo_ + hi_);
+        lengths(s_.xo, s_.length_o);
+        s_.need = (s_.cost < kInf && s_.length_o <= s_.cost) ||
+                  (s_.cost == kInf && s_.length_o < s_.pbest_cost);
+        evaluate(s_.xo, s_.length_o, s_.need, s_.cost_o);
+        for (Eigen::Index i = 0; i < n; ++i) {
+          if (s_.cost(i) < kInf && !s_.need(i)) continue;  // x_o is longer: no move
+          if (s_.cost_o(i) <= s_.cost(i)) {
+            s_.x.row(i) = s_.xo.row(i);
+            s_.cost(i) = s_.cost_o(i);
+          }
+        }
+        remember_best();
+      }
+      InertiaInputs in;
+      in.j = j;
+      in.t_max = pso_.iterations;
+      in.w_max = pso_.w_max;
+      in.w_min = pso_.w_min;
+      if (pso_.inertia == Inertia::stochastic) in.rho = rng_.uniform(-0.1, 0.1);
+      in.gbest = gbest_cost_;
+      in.gbest_previous = previous;
+      const double weight = inertia_weight(pso_.inertia, in);
+      // Eq. 4.2a, r1 and r2 per particle and coordinate; clamping to +-vmax and to the box.
+      fill_uniform(s_.r1, n);
+      fill_uniform(s_.r2, n);
+      s_.v = weight * s_.v + pso_.c1 * s_.r1 * (s_.pbest - s_.x) +
+             pso_.c2 * s_.r2 * ((-s_.x).rowwise() + gbest_);
+      s_.v = s_.v.max(-vmax).min(vmax);
+      s_.x += s_.v;
+      s_.x.col(0) = s_.x.col(0).max(lo_(0)).min(hi_(0));
+      s_.x.col(1) = s_.x.col(1).max(lo_(1)).min(hi_(1));
+    }
+    best_cost = gbest_cost_;
+    return {gbest_(0), gbest_(1)};
+  }
+
+ private:
+  void fill_uniform(Swarm& m, Eigen::Index n) {
+    m.resize(n, 2);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      m(i, 0) = rng_.uniform01();
+      m(i, 1) = rng_.uniform01();
+    }
+  }
+
+  // |a - x| + |x - b| for each row of pos.
+  void lengths(const Swarm& pos, Eigen::ArrayXd& length) const {
+    length = ((pos.col(0) - a_.x).square() + (pos.col(1) - a_.y).square()).sqrt() +
+             ((pos.col(0) - b_.x).square() + (pos.col(1) - b_.y).square()).sqrt();
+  }
+
+  // Eq. 5.1g resolved, for the rows in `need` (the others get +inf, which no comparison that
+  // reads them can tell from their true cost): the local path length, +inf when a segment is not
+  // free. The segments to a go first, as one batch; those to b only for the points a sees.
+  void evaluate(const Swarm& pos, const Eigen::ArrayXd& length, const Mask& need,
+                Eigen::ArrayXd& cost) {
+    cost.setConstant(pos.rows(), kInf);
+    s_.points.clear();
+    s_.index.clear();
+    for (Eigen::Index i = 0; i < pos.rows(); ++i)
+      if (need(i)) {
+        s_.points.push_back({pos(i, 0), pos(i, 1)});
+        s_.index.push_back(i);
+      }
+    s_.free.resize(s_.points.size());
+    segments_free_from(grid_, a_, s_.points, sight_, s_.free);
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < s_.points.size(); ++k)
+      if (s_.free[k] != 0) {
+        s_.points[kept] = s_.points[k];
+        s_.index[kept] = s_.index[k];
+        ++kept;
+      }
+    s_.points.resize(kept);
+    s_.free.resize(kept);
+    segments_free_from(grid_, b_, s_.points, sight_, s_.free);
+    for (std::size_t k = 0; k < kept; ++k)
+      if (s_.free[k] != 0) cost(s_.index[k]) = length(s_.index[k]);
+  }
+
+  void remember_best() {
+    for (Eigen::Index i = 0; i < s_.cost.size(); ++i) {
+      if (s_.cost(i) < s_.pbest_cost(i)) {
+        s_.pbest_cost(i) = s_.cost(i);
+        s_.pbest.row(i) = s_.x.row(i);
+      }
+      if (s_.cost(i) < gbest_cost_) {
+        gbest_cost_ = s_.cost(i);
+        gbest_ = s_.x.row(i);
+      }
+    }
+  }
+
+  const Grid& grid_;
+  const SightRule& sight_;
+  const PsoSettings& pso_;
+  Rng& rng_;
+  HmaScratch& s_;
+  Point a_, b_;
+  Row2 lo_, hi_, gbest_;
+  double gbest_cost_ = kInf;
+};
+
+nlohmann::json ma_star_params_of(const Params& params) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const char* name : kMaStarParams) out[name] = params.values().at(name);
+  return out;
+}
+
+class HmaStarPlanner final : public Planner {
+ public:
+  explicit HmaStarPlanner(const Params& params) {
+    const PlannerInfo ma = ma_star_planner();
+    ma_star_ = ma.make(Params::resolve(ma.params, ma_star_params_of(params), "hma_star"));
+    const auto rule = corner_rule_from_string(params.choice("corner_rule"));
+    const auto inertia = inertia_from_string(params.choice("inertia"));
+    if (!rule || !inertia) throw std::logic_error("hma_star: parameters not validated");
+    sight_ = SightRule::circles(params.number("r_obs"), *rule);
+    pso_.swarm = static_cast<int>(params.integer("swarm"));
+    pso_.iterations = static_cast<int>(params.integer("iterations"));
+    pso_.c1 = params.number("c1");
+    pso_.c2 = params.number("c2");
+    pso_.w_max = params.number("w_max");
+    pso_.w_min = params.number("w_min");
+    pso_.inertia = *inertia;
+    pso_.vmax_fraction = params.number("vmax_fraction");
+    pso_.margin = params.number("window_margin");
+    pso_.opposition = params.boolean("opposition");
+  }
+
+  PlanResult plan(const PlanRequest& request) const override {
+    PlanResult result = ma_star_->plan(request);  // phases "search" and "postprocess"
+    if (!result.success) return result;
+    int windows = 0;
+    int improvements = 0;
+    {
+      PhaseTimer timer(result, "pso");
+      HmaScratch& scratch = request.scratch.get<HmaScratch>();
+      std::vector<Point>& path = result.path;
+      WindowSwarm swarm(request.grid, sight_, pso_, request.rng, scratch);
+      for (std::size_t n = 0; n + 2 < path.size(); ++n) {
+        if (request.deadline.expired()) return PlanResult::failed(Failure::limit, "time limit");
+        const double current =
+            point_distance(path[n], path[n + 1]) + point_distance(path[n + 1], path[n + 2]);
+        double best = kInf;
+        const Point candidate = swarm.run(path[n], path[n + 2], best);
+        ++windows;
+        if (best < current - kMinGain) {
+          path[n + 1] = candidate;
+          ++improvements;
+        }
+      }
+      remove_collinear(path);
+      remove_turning_points(request.grid, path, sight_);
+    }
+    result.extra.emplace_back("pso_windows", windows);
+    result.extra.emplace_back("pso_improvements", improvements);
+    return result;
+  }
+
+ private:
+  std::unique_ptr<Planner> ma_star_;
+  SightRule sight_;
+  PsoSettings pso_;
+};
+
+}  // namespace
+
+std::optional<Inertia> inertia_from_string(std::string_view name) {
+  if (name == "stochastic") return Inertia::stochastic;
+  if (name == "adaptive") return Inertia::adaptive;
+  if (name == "linear") return Inertia::linear;
+  return std::nullopt;
+}
+
+double inertia_weight(Inertia mode, const InertiaInputs& in) {
+  const double progress = static_cast<double>(in.j) / in.t_max;
+  switch (mode) {
+    case Inertia::stochastic:  // paper 000 eq. 5.1d
+      return in.w_max - (in.w_max - in.w_min) * progress * std::exp(in.rho);
+    case Inertia::linear:  // eq. 5.1d with rho = 0
+      return in.w_max - (in.w_max - in.w_min) * progress;
+    case Inertia::adaptive: {  // eq. 5.1c as printed
+      const bool known = in.j > 1 && std::isfinite(in.gbest) && std::isfinite(in.gbest_previous) &&
+                         in.gbest_previous > 0.0;
+      const double ratio = known ? in.gbest / in.gbest_previous : 1.0;
+      return (in.w_max + in.w_min) * ratio - in.w_max * progress;
+    }
+  }
+  return in.w_max;
+}
+
+PlannerInfo hma_star_planner() {
+  PlannerInfo info;
+  info.name = "hma_star";
+  info.summary = "HMA*: MA* key nodes, then a sliding-window PSO with stochastic inertia weight "
+                 "and opposition-based learning re-placing each middle node";
+  info.source = "paper 000 section 5 (eq. 4.2a, 5.1c-5.1g, pseudo-code); PLANNERS.md HMA*";
+  info.expanded_nodes_meaning = "MA*'s search expansions (cells closed, goal included)";
+  info.stochastic = true;
+  for (const ParamSpec& spec : ma_star_planner().params)
+    for (const char* name : kMaStarParams)
+      if (spec.name == name) info.params.push_back(spec);
+  info.params.push_back(ParamSpec::integer("swarm", 30, 1, 10000, "particles per window"));
+  info.params.push_back(
+      ParamSpec::integer("iterations", 50, 1, 100000, "T_max: PSO iterations per window"));
+  info.params.push_back(
+      ParamSpec::number("c1", 1.5, 0.0, 10.0, "self-learning factor c1 (eq. 4.2a)"));
+  info.params.push_back(
+      ParamSpec::number("c2", 1.5, 0.0, 10.0, "social-learning factor c2 (eq. 4.2a)"));
+  info.params.push_back(ParamSpec::number("w_max", 0.9, 0.0, 2.0, "maximum inertia weight"));
+  info.params.push_back(ParamSpec::number("w_min", 0.4, 0.0, 2.0, "minimum inertia weight"));
+  info.params.push_back(ParamSpec::choice(
+      "inertia", "stochastic", {"stochastic", "adaptive", "linear"},
+      "inertia weight: stochastic = eq. 5.1d, w_max - (w_max - w_min)(j/T_max)e^rho with rho "
+      "uniform in [-0.1, 0.1] per iteration (default); adaptive = eq. 5.1c as printed, "
+      "(w_max + w_min)(gbest_j / gbest_j-1) - w_max j / T_max; linear = eq. 5.1d with rho = 0"));
+  info.params.push_back(ParamSpec::number(
+      "vmax_fraction", 0.2, 0.0, 10.0,
+      "maximum particle speed per coordinate, as a fraction of the (widened) window diagonal"));
+  info.params.push_back(ParamSpec::number(
+      "window_margin", 1.0, 0.0, 1000.0,
+      "cells added on every side of the bounding box of P(n), P(n+2) where the swarm lives "
+      "(eq. 5.1e's box, widened so that a detour is reachable)"));
+  info.params.push_back(ParamSpec::boolean(
+      "opposition", true,
+      "opposition-based learning each iteration (step 11): move a particle to lo + hi - x "
+      "when that is no worse"));
+  info.make = [](const Params& params) -> std::unique_ptr<Planner> {
+    return std::make_unique<HmaStarPlanner>(params);
+  };
+  return info;
+}
+
+}  // namespace agv

@@ -1,0 +1,205 @@
+// The word-parallel line of sight (core/line_of_sight_batch.h) against the reference walk
+// (segment_free_reference): the same verdict on every segment, for every corner rule and
+// clearance radius, over grids of many sizes (widths across the 64-bit word boundaries) and
+// densities, with endpoints on vertices, grid lines, half and quarter cells, just off integers
+// (either side of the snapping tolerance) and anywhere.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/line_of_sight.h"
+#include "core/line_of_sight_batch.h"
+#include "core/corner_rule.h"
+#include "core/grid.h"
+
+namespace agv {
+namespace {
+
+constexpr CornerRule kRules[] = {CornerRule::allow, CornerRule::no_squeeze,
+                                 CornerRule::no_corner_cut};
+
+// Every margin mode under every corner rule: cells; radius 0.5 (clearance implied by cells);
+// paper 000's r_obs (half a cell diagonal); margin 0.5 (radius 1); wider circles.
+std::vector<SightRule> all_rules() {
+  std::vector<SightRule> rules;
+  for (CornerRule c : kRules) {
+    rules.push_back(SightRule::cells(c));
+    rules.push_back(SightRule::circles(0.5, c));
+    rules.push_back(SightRule::circles(std::sqrt(0.5), c));
+    rules.push_back(SightRule::margin(0.5, c));
+    rules.push_back(SightRule::circles(1.3, c));
+    rules.push_back(SightRule::margin(2.2, c));
+  }
+  return rules;
+}
+
+std::string describe(const SightRule& r) {
+  return std::string(to_string(r.corners)) +
+         (r.kind == SightRule::Kind::cells ? " cells" : " radius " + std::to_string(r.radius));
+}
+
+class Generator {
+ public:
+  explicit Generator(std::uint64_t seed) : rng_(seed) {}
+  std::uint64_t below(std::uint64_t n) { return rng_() % n; }
+  double unit() { return static_cast<double>(rng_() >> 11) * 0x1.0p-53; }
+
+  Grid grid(int w, int h, double density) {
+    Grid g(w, h);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (unit() < density) g.set_blocked(x, y, true);
+    return g;
+  }
+
+  // A coordinate in [-0.3, size + 0.3] (some endpoints outside the grid): on a grid line, a
+  // half or quarter cell, within 1e-10 of an integer (snapped onto it), 2e-9 off one (not
+  // snapped), or any double.
+  double coordinate(int size) {
+    const double whole = static_cast<double>(below(static_cast<std::uint64_t>(size) + 1));
+    switch (below(8)) {
+      case 0: return whole;
+      case 1: return whole + 0.5;
+      case 2: return whole + 0.25 * static_cast<double>(below(4));
+      case 3: return whole + (below(2) ? 1e-10 : -1e-10);
+      case 4: return whole + (below(2) ? 2e-9 : -2e-9);
+      case 5: return -0.3 + unit() * (size + 0.6);
+      default: return unit() * size;
+    }
+  }
+
+  Point point(const Grid& g) {
+    if (below(4) == 0)  // a cell centre, the most common waypoint
+      return centre({static_cast<int>(below(static_cast<std::uint64_t>(g.width()))),
+                     static_cast<int>(below(static_cast<std::uint64_t>(g.height())))});
+    return {coordinate(g.width()), coordinate(g.height())};
+  }
+
+  // The second endpoint: any point, a lattice step (rational slopes through vertices), or a
+  // segment of a chosen length in a random direction (0 to the whole map).
+  Point partner(const Grid& g, Point a) {
+    switch (below(4)) {
+      case 0: return point(g);
+      case 1: {
+        const int k = 1 + static_cast<int>(below(6));
+        const double step = below(3) == 0 ? 0.5 : 1.0;
+        return {a.x + step * static_cast<double>(static_cast<int>(below(7)) - 3) * k,
+                a.y + step * static_cast<double>(static_cast<int>(below(7)) - 3) * k};
+      }
+      default: {
+        static constexpr double kLengths[] = {0.0, 1e-12, 0.3, 1.0, 2.0, 8.0, 32.0, 128.0, 1e9};
+        double len = kLengths[below(std::size(kLengths))];
+        len = std::min(len, std::hypot(g.width(), g.height()));
+        const double angle = unit() * 6.283185307179586;
+        return {a.x + len * std::cos(angle), a.y + len * std::sin(angle)};
+      }
+    }
+  }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+struct Size {
+  int w, h;
+};
+constexpr Size kSizes[] = {{1, 1},   {2, 3},    {7, 5},    {20, 20},  {31, 9},   {62, 4},
+                           {63, 17}, {64, 64},  {65, 33},  {100, 7},  {127, 40}, {128, 3},
+                           {129, 129}, {191, 12}, {200, 200}, {300, 50}};
+constexpr double kDensities[] = {0.0, 0.05, 0.2, 0.35, 0.5, 0.8};
+
+TEST(LosSimd, RandomSegmentsAgreeWithReference) {
+  Generator gen(20240613);
+  const std::vector<SightRule> rules = all_rules();
+  constexpr int kSegments = 100000;
+  constexpr int kPerGrid = 500;
+  std::vector<Point> as, bs;
+  std::vector<std::uint8_t> out, out_from;
+  std::int64_t free_count = 0, checks = 0;
+  for (int start = 0; start < kSegments; start += kPerGrid) {
+    const int m = start / kPerGrid;
+    const Size size = kSizes[m % std::size(kSizes)];
+    const Grid g = gen.grid(size.w, size.h, kDensities[(m / 3) % std::size(kDensities)]);
+    as.clear();
+    bs.clear();
+    for (int s = 0; s < kPerGrid; ++s) {
+      as.push_back(gen.point(g));
+      bs.push_back(gen.partner(g, as.back()));
+    }
+    out.assign(as.size(), 2);
+    out_from.assign(as.size(), 2);
+    for (const SightRule& rule : rules) {
+      segments_free(g, as, bs, rule, out);
+      segments_free_from(g, as[0], bs, rule, out_from);
+      for (std::size_t s = 0; s < as.size(); ++s) {
+        const bool expected = segment_free_reference(g, as[s], bs[s], rule);
+        const auto where = [&] {
+          char buf[200];
+          std::snprintf(buf, sizeof buf, "grid %dx%d map %d (%.17g,%.17g)-(%.17g,%.17g) ", size.w,
+                        size.h, m, as[s].x, as[s].y, bs[s].x, bs[s].y);
+          return std::string(buf) + describe(rule);
+        };
+        ASSERT_EQ(segment_free(g, as[s], bs[s], rule), expected) << where();
+        ASSERT_EQ(segment_free(g, bs[s], as[s], rule), expected) << where() << " reversed";
+        ASSERT_EQ(out[s] == 1, expected) << where() << " batched";
+        ASSERT_EQ(out_from[s] == 1, segment_free_reference(g, as[0], bs[s], rule))
+            << where() << " from as[0]";
+        free_count += expected;
+        ++checks;
+      }
+    }
+  }
+  // Both verdicts well represented, so the agreement means something.
+  EXPECT_GT(free_count, checks / 10);
+  EXPECT_LT(free_count, checks * 9 / 10);
+}
+
+TEST(LosSimd, PointsAgreeWithReference) {
+  Generator gen(7);
+  const std::vector<SightRule> rules = all_rules();
+  for (int m = 0; m < 40; ++m) {
+    const Size size = kSizes[m % std::size(kSizes)];
+    const Grid g = gen.grid(size.w, size.h, kDensities[m % std::size(kDensities)]);
+    std::vector<Point> ps;
+    for (int s = 0; s < 500; ++s) ps.push_back(gen.point(g));
+    std::vector<std::uint8_t> out(ps.size(), 2);
+    for (const SightRule& rule : rules) {
+      points_free(g, ps, rule, out);
+      for (std::size_t s = 0; s < ps.size(); ++s)
+        ASSERT_EQ(out[s] == 1, segment_free_reference(g, ps[s], ps[s], rule))
+            << ps[s].x << "," << ps[s].y << " " << describe(rule);
+    }
+  }
+}
+
+// Degenerate slopes: long, almost flat segments whose crossings snap onto a row line over many
+// columns, and exact vertex runs, across word boundaries.
+TEST(LosSimd, NearlyFlatAndVertexRuns) {
+  Generator gen(99);
+  const std::vector<SightRule> rules = all_rules();
+  for (int m = 0; m < 30; ++m) {
+    const Grid g = gen.grid(150, 12, 0.03 * (m % 5));
+    for (int s = 0; s < 300; ++s) {
+      const double y = static_cast<double>(1 + gen.below(10));
+      const double off[] = {0.0, 1e-10, -1e-10, 5e-10, 2e-9, 1e-7, 0.5};
+      const Point a{gen.unit() * 10.0, y + off[gen.below(std::size(off))]};
+      const Point b{140.0 + gen.unit() * 10.0, y + off[gen.below(std::size(off))]};
+      const Point c{static_cast<double>(gen.below(40)), static_cast<double>(gen.below(12))};
+      const Point d{c.x + 110.0, c.y + (gen.below(2) ? 1.0 : -1.0) * static_cast<double>(gen.below(3))};
+      for (const SightRule& rule : rules) {
+        ASSERT_EQ(segment_free(g, a, b, rule), segment_free_reference(g, a, b, rule))
+            << a.x << "," << a.y << " " << b.x << "," << b.y << " " << describe(rule);
+        ASSERT_EQ(segment_free(g, c, d, rule), segment_free_reference(g, c, d, rule))
+            << c.x << "," << c.y << " " << d.x << "," << d.y << " " << describe(rule);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace agv

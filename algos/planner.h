@@ -65,8 +65,10 @@ struct Trajectory {
 };
 
 struct PlanResult {
-  bool success = false;
-  Failure failure = Failure::none;
+  // The outcome: none = a path was found. A result starts as no_path, so a planner that returns
+  // without saying it succeeded has not.
+  Failure failure = Failure::no_path;
+  bool ok() const { return failure == Failure::none; }
   std::string message;  // why, for failures; empty on success
   // Waypoints in continuous cell coordinates (cell centre = x + 0.5), start first, goal last.
   std::vector<Point> path;

@@ -18,6 +18,20 @@
 
 namespace agv {
 
+const char* to_string(PlannerKind kind) {
+  switch (kind) {
+    case PlannerKind::grid_search:
+      return "grid_search";
+    case PlannerKind::sampling:
+      return "sampling";
+    case PlannerKind::swarm:
+      return "swarm";
+    case PlannerKind::local:
+      return "local";
+  }
+  return "?";
+}
+
 const std::vector<PlannerInfo>& planner_registry() {
   static const std::vector<PlannerInfo> registry = {
       astar_planner(),
@@ -81,6 +95,7 @@ nlohmann::json registry_json() {
     nlohmann::json p = nlohmann::json::array();
     for (const auto& s : info.params) p.push_back(s.to_json());
     out.push_back({{"name", info.name},
+                   {"kind", to_string(info.kind)},
                    {"summary", info.summary},
                    {"source", info.source},
                    {"expanded_nodes", info.expanded_nodes_meaning},

@@ -14,8 +14,14 @@
 
 namespace agv {
 
+// The family a planner belongs to (its folder under algos/). Code that needs "the grid
+// planners" (a fusion planner's global planner, the family tests) asks the registry for a kind.
+enum class PlannerKind { grid_search, sampling, swarm, local };
+const char* to_string(PlannerKind kind);
+
 struct PlannerInfo {
   std::string name;     // stable public name, e.g. "astar"
+  PlannerKind kind = PlannerKind::grid_search;
   std::string summary;  // one line for `agvbench list`
   std::string source;   // where it comes from, e.g. "paper 000 section 4.1"
   std::string expanded_nodes_meaning;  // what expanded_nodes counts for this planner

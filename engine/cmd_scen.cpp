@@ -54,7 +54,7 @@ int command_scen(const ScenCommand& cmd) {
     const PlanResult r = planner.planner->plan(req);
     times_ns.push_back(static_cast<double>(thread_cpu_ns() - t0));
     expansions += r.expanded_nodes;
-    if (!r.success) {
+    if (!r.ok()) {
       ++failures;
       ++mismatches;
       if (bad.size() < 20) bad.push_back({{"query", i + 1}, {"failure", to_string(r.failure)}});

@@ -79,7 +79,7 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
     judged = true;
   }
 
-  if (!r.success) {
+  if (!r.ok()) {
     out.message = r.message;
     switch (r.failure) {
       case Failure::limit:

@@ -50,7 +50,7 @@ void run_case(benchmark::State& state, const Case& c, const Planner& planner) {
       Rng rng(7, i);
       const PlanResult r = planner.plan(PlanRequest{m.grid, m.start, m.goal, rng, scratch});
       expanded += r.expanded_nodes;
-      successes += r.success ? 1 : 0;
+      successes += r.ok() ? 1 : 0;
       ++plans;
       benchmark::DoNotOptimize(r.path.data());
     }

@@ -56,7 +56,7 @@ void run_planner(benchmark::State& state, const Case& c, const Planner& planner)
   for (auto _ : state) {
     for (const MapInstance& m : c.maps) {
       const PlanResult r = planner.plan(PlanRequest{m.grid, m.start, m.goal, rng, scratch});
-      if (!r.success) state.SkipWithError("plan failed");
+      if (!r.ok()) state.SkipWithError("plan failed");
       expanded += r.expanded_nodes;
       ++plans;
       benchmark::DoNotOptimize(r.path.data());

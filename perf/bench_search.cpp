@@ -58,7 +58,7 @@ void run_case(benchmark::State& state, const Case& c, const Planner& planner) {
   for (auto _ : state) {
     for (const Query& q : c.queries) {
       const PlanResult r = planner.plan(PlanRequest{c.grid, q.start, q.goal, rng, scratch});
-      if (!r.success) state.SkipWithError("search failed");
+      if (!r.ok()) state.SkipWithError("search failed");
       expanded += r.expanded_nodes;
       benchmark::DoNotOptimize(r.path.data());
     }

@@ -271,7 +271,7 @@ class FusionPlanner final : public Planner {
     // 1. The world, from the map's reference path.
     std::int64_t t0 = thread_cpu_ns();
     std::vector<Point> reference;
-    if (PlanResult ref = reference_->plan(req); ref.success) reference = std::move(ref.path);
+    if (PlanResult ref = reference_->plan(req); ref.ok()) reference = std::move(ref.path);
     Rng wrng = world_rng(grid, req.start, req.goal, s_.world_seed);
     DwaWorld world = DwaWorld::generate(grid, req.start, req.goal, reference, s_.world, wrng);
     result.phases.push_back({"world", thread_cpu_ns() - t0});
@@ -286,7 +286,7 @@ class FusionPlanner final : public Planner {
       result.phases.push_back({"global", thread_cpu_ns() - t0});
       result.expanded_nodes = g.expanded_nodes;
       result.rule = g.rule;
-      if (!g.success) {
+      if (!g.ok()) {
         PlanResult f = PlanResult::failed(g.failure, "global planner " + s_.global_name + ": " +
                                                          g.message);
         f.rule = g.rule;
@@ -326,8 +326,8 @@ class FusionPlanner final : public Planner {
     tr.global_path = std::move(global_path);
     result.extra.emplace_back("key_points", static_cast<double>(tr.key_points.size()));
     result.extra.emplace_back("replans", static_cast<double>(run.replans));
-    result.success = tr.end_reason == "reached";
-    if (!result.success) result.message = "run ended: " + tr.end_reason;
+    result.failure = tr.end_reason == "reached" ? Failure::none : Failure::no_path;
+    if (!result.ok()) result.message = "run ended: " + tr.end_reason;
     result.path = tr.position;
     result.trajectory = std::move(run.trajectory);
     return result;
@@ -342,6 +342,7 @@ class FusionPlanner final : public Planner {
 PlannerInfo make_info(const char* name, const char* summary, const char* source,
                       const char* global_default, DwaScore score) {
   PlannerInfo info;
+  info.kind = PlannerKind::local;
   info.name = name;
   info.summary = summary;
   info.source = source;

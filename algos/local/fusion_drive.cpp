@@ -166,7 +166,7 @@ DriveResult drive(const FusionOptions& o, const PlanRequest& req, DwaWorld& worl
         const PlanRequest sub{fs.replan_grid, here, req.goal, req.rng, req.scratch, req.deadline};
         const PlanResult g = global->plan(sub);
         out.expanded_nodes += g.expanded_nodes;
-        if (g.success) {
+        if (g.ok()) {
           keys = fusion_key_points(g.path, o.key_point_tolerance);
           if (keys.size() < 2) keys.push_back(goal);
           key = 1;

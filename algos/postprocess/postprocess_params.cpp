@@ -165,7 +165,7 @@ void finish_path(const Grid& grid, const PostprocessOptions& options, WorkingPat
 }
 
 void apply_postprocessing(const Grid& grid, const PostprocessOptions& options, PlanResult& result) {
-  if (!result.success) return;
+  if (!result.ok()) return;
   if (options.shortcut == ShortcutMode::none && options.smoothing == SmoothingMode::none) return;
   WorkingPath path(std::move(result.path));
   if (options.shortcut != ShortcutMode::none) {

@@ -24,7 +24,7 @@ class BirrtPlanner final : public Planner {
     PlanResult result;
     result.rule = settings_.sight.corners;
     if (request.start == request.goal) {
-      result.success = true;
+      result.failure = Failure::none;
       result.path = {centre(request.start)};
       result.expanded_nodes = 1;
       return result;
@@ -82,7 +82,7 @@ class BirrtPlanner final : public Planner {
     const bool a_is_start = a == &scratch.from_start;
     const int meet_start = a_is_start ? meet_a : meet_b;
     const int meet_goal = a_is_start ? meet_b : meet_a;
-    result.success = true;
+    result.failure = Failure::none;
     scratch.from_start.append_path_from_root(meet_start, result.path);
     for (int n = scratch.from_goal.parent(meet_goal); n >= 0; n = scratch.from_goal.parent(n))
       result.path.push_back(scratch.from_goal.point(n));
@@ -97,6 +97,7 @@ class BirrtPlanner final : public Planner {
 
 PlannerInfo birrt_planner() {
   PlannerInfo info;
+  info.kind = PlannerKind::sampling;
   info.name = "birrt";
   info.summary = "Bi-RRT (RRT-Connect): start and goal trees alternate extend / connect";
   info.source =

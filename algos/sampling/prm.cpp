@@ -64,7 +64,7 @@ class PrmPlanner final : public Planner {
     PlanResult result;
     result.rule = sight_.corners;
     if (request.start == request.goal) {
-      result.success = true;
+      result.failure = Failure::none;
       result.path = {centre(request.start)};
       result.expanded_nodes = 1;
       return result;
@@ -91,7 +91,7 @@ class PrmPlanner final : public Planner {
       result.message = "the roadmap does not connect start and goal (too few samples?)";
       return result;
     }
-    result.success = true;
+    result.failure = Failure::none;
     for (int n = kGoalNode; n >= 0; n = s.parent[static_cast<std::size_t>(n)])
       result.path.push_back(s.points[static_cast<std::size_t>(n)]);
     std::reverse(result.path.begin(), result.path.end());
@@ -210,6 +210,7 @@ class PrmPlanner final : public Planner {
 
 PlannerInfo prm_planner() {
   PlannerInfo info;
+  info.kind = PlannerKind::sampling;
   info.name = "prm";
   info.summary = "PRM: uniform free samples, k-nearest roadmap, Dijkstra on the roadmap";
   info.source = "PLANNERS.md Baselines; paper 000 Tables III-XIII (PRM column); Kavraki 1996";

@@ -26,7 +26,7 @@ class RrtPlanner final : public Planner {
     PlanResult result;
     result.rule = settings_.sight.corners;
     if (request.start == request.goal) {
-      result.success = true;
+      result.failure = Failure::none;
       result.path = {start};
       result.expanded_nodes = 1;
       return result;
@@ -74,7 +74,7 @@ class RrtPlanner final : public Planner {
                                  : "max_iterations samples drawn without reaching the goal";
       return result;
     }
-    result.success = true;
+    result.failure = Failure::none;
     tree.append_path_from_root(reached, result.path);
     return result;
   }
@@ -88,6 +88,7 @@ class RrtPlanner final : public Planner {
 
 PlannerInfo rrt_planner() {
   PlannerInfo info;
+  info.kind = PlannerKind::sampling;
   info.name = "rrt";
   info.summary = "RRT: one tree from the start, fixed-step extension, goal bias";
   info.source = "PLANNERS.md Baselines; paper 000 Tables III-XIII (RRT column); LaValle 1998";

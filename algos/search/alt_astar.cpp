@@ -74,7 +74,7 @@ class AltAStarPlanner final : public Planner {
         policy.weight = rate_weight(*policy.sat, request.start, request.goal, max_weight_);
     }
     PlanResult result = plan_grid_search(request, setup_, policy);
-    if (!result.success) return result;
+    if (!result.ok()) return result;
     WorkingPath path(std::move(result.path));
     {
       PhaseTimer timer(result, "postprocess");  // section 2.4

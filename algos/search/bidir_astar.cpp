@@ -199,7 +199,7 @@ class BidirAStarPlanner final : public Planner {
       if (out.failure == Failure::none) {
         trace_meeting(request.grid, buffers, out.meet, buffers.cells);
         result.path = cell_centres(buffers.cells);
-        result.success = true;
+        result.failure = Failure::none;
       } else {
         result.failure = out.failure;
         result.message = out.failure == Failure::limit ? "deadline passed during the search"

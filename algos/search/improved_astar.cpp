@@ -66,7 +66,7 @@ class ImprovedAStarPlanner final : public Planner {
       return plan_grid_search(
           request, setup_, TurnWeightedPolicy<decltype(h)>(h, request.goal, turn_weight_));
     });
-    if (!result.success) return result;
+    if (!result.ok()) return result;
     WorkingPath path(std::move(result.path));
     if (external_) {
       PhaseTimer timer(result, "postprocess");

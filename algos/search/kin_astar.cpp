@@ -97,7 +97,7 @@ class KinAStarPlanner final : public Planner {
     PlanResult result = plan_grid_search(request, setup_, policy);
     if (result.failure != Failure::invalid_input)
       result.extra.emplace_back("generated_nodes", static_cast<double>(seen_cells(request)));
-    if (!result.success) return result;
+    if (!result.ok()) return result;
     WorkingPath path(std::move(result.path));
     {
       PhaseTimer timer(result, "postprocess");  // section 2.3

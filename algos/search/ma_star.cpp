@@ -52,7 +52,7 @@ class MaStarPlanner final : public Planner {
   PlanResult plan(const PlanRequest& request) const override {
     PlanResult result = plan_grid_search(request, setup_,
                                          MaStarPolicy(request.start, request.goal, euclid_g_));
-    if (!result.success) return result;
+    if (!result.ok()) return result;
     WorkingPath path(std::move(result.path));
     {
       PhaseTimer timer(result, "postprocess");

@@ -262,7 +262,7 @@ PlanResult plan_grid_search(const PlanRequest& request, const GridSearchSetup& s
       std::vector<Cell> cells;
       trace_cells(buffers, request.grid, request.goal, cells);
       result.path = cell_centres(cells);
-      result.success = true;
+      result.failure = Failure::none;
     } else {
       result.failure = out.failure;
       result.message = out.failure == Failure::limit ? "deadline passed during the search"

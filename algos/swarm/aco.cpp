@@ -268,7 +268,7 @@ class AcoPlanner final : public Planner {
     PlanResult result;
     result.rule = settings_.rule;
     if (request.start == request.goal) {
-      result.success = true;
+      result.failure = Failure::none;
       result.path = {centre(request.start)};
       return result;
     }
@@ -288,7 +288,7 @@ class AcoPlanner final : public Planner {
                                  : "deadline passed before any ant reached the goal";
       return result;
     }
-    result.success = true;
+    result.failure = Failure::none;
     result.path.reserve(s.best.size());
     for (const int index : s.best) result.path.push_back(centre(request.grid.cell_of(index)));
     return result;
@@ -302,6 +302,7 @@ class AcoPlanner final : public Planner {
 
 PlannerInfo aco_planner() {
   PlannerInfo info;
+  info.kind = PlannerKind::swarm;
   info.name = "aco";
   info.summary = "ant colony (Ant System) on the 8-connected grid, paper 002 Table 2 defaults";
   info.source = "PLANNERS.md Baselines; paper 002 section 5, Table 2; Dorigo et al. 1996";

@@ -264,7 +264,7 @@ class HmaStarPlanner final : public Planner {
 
   PlanResult plan(const PlanRequest& request) const override {
     PlanResult result = ma_star_->plan(request);  // phases "search" and "postprocess"
-    if (!result.success) return result;
+    if (!result.ok()) return result;
     int windows = 0;
     int improvements = 0;
     {
@@ -326,6 +326,7 @@ double inertia_weight(Inertia mode, const InertiaInputs& in) {
 
 PlannerInfo hma_star_planner() {
   PlannerInfo info;
+  info.kind = PlannerKind::swarm;
   info.name = "hma_star";
   info.summary = "HMA*: MA* key nodes, then a sliding-window PSO with stochastic inertia weight "
                  "and opposition-based learning re-placing each middle node";

@@ -87,7 +87,7 @@ TEST_P(Baselines, PathsValidateOnRandomMaps) {
     for (int i = 0; i < kMapsPerDensity; ++i) {
       const MapInstance& map = maps[di * kMapsPerDensity + static_cast<std::size_t>(i)];
       const PlanResult r = run(planner, map, 1000 + static_cast<std::uint64_t>(i), scratch);
-      if (!r.success) {
+      if (!r.ok()) {
         EXPECT_EQ(r.failure, Failure::limit) << GetParam() << " map " << i << ": " << r.message;
         EXPECT_TRUE(r.path.empty());
         continue;
@@ -130,11 +130,11 @@ TEST_P(Reproducible, SameSeedSamePathDifferentSeedsDiffer) {
     // A different scratch object, warmed by another plan first: buffers carry nothing over.
     run(planner, random_map(0.3, 6000 + i), 7, scratch_b);
     const PlanResult b = run(planner, map, 42, scratch_b);
-    ASSERT_EQ(a.success, b.success) << "map " << i;
+    ASSERT_EQ(a.ok(), b.ok()) << "map " << i;
     ASSERT_EQ(a.path, b.path) << "map " << i;
     ASSERT_EQ(a.expanded_nodes, b.expanded_nodes) << "map " << i;
     const PlanResult c = run(planner, map, 43, scratch_a);
-    if (a.success && c.success) {
+    if (a.ok() && c.ok()) {
       ++compared;
       if (a.path != c.path) ++differ;
     }
@@ -155,7 +155,7 @@ TEST(BaselineEdges, StartEqualsGoalIsOnePoint) {
   Scratch scratch;
   for (const char* name : {"prm", "rrt", "birrt", "aco"}) {
     const PlanResult r = run(make(name), map, 1, scratch);
-    ASSERT_TRUE(r.success) << name;
+    ASSERT_TRUE(r.ok()) << name;
     ASSERT_EQ(r.path.size(), 1U) << name;
     EXPECT_EQ(r.path[0], centre(map.start)) << name;
   }
@@ -172,12 +172,12 @@ TEST(BaselineEdges, CapsAndDeadlinesGiveLimit) {
   const Deadline past = Deadline::after(std::chrono::nanoseconds(-1));
   for (const char* name : {"prm", "rrt", "birrt", "aco"}) {
     const PlanResult r = run(make(name), map, 1, scratch, past);
-    EXPECT_FALSE(r.success) << name;
+    EXPECT_FALSE(r.ok()) << name;
     EXPECT_EQ(r.failure, Failure::limit) << name;
   }
   for (const char* name : {"rrt", "birrt"}) {
     const PlanResult r = run(make(name, {{"max_iterations", 1}}), map, 1, scratch);
-    EXPECT_FALSE(r.success) << name;
+    EXPECT_FALSE(r.ok()) << name;
     EXPECT_EQ(r.failure, Failure::limit) << name;
   }
   const PlanResult prm = run(make("prm", {{"samples", 0}}), map, 1, scratch);
@@ -216,7 +216,7 @@ double mean_prm_length(const MapInstance& map, int samples, int seeds, Scratch& 
   int found = 0;
   for (int s = 0; s < seeds; ++s) {
     const PlanResult r = run(prm, map, static_cast<std::uint64_t>(s), scratch);
-    if (!r.success) continue;
+    if (!r.ok()) continue;
     const double length = path_length(r.path);
     // Never below the straight line.
     EXPECT_GE(length, euclid(map.start, map.goal) - 1e-9);
@@ -307,7 +307,7 @@ TEST(Aco, NeverRevisitsAndMovesLegallyUnderEachRule) {
     for (int i = 0; i < 60; ++i) {
       const MapInstance map = random_map(0.3, 8000 + i);
       const PlanResult r = run(aco, map, static_cast<std::uint64_t>(i), scratch);
-      if (!r.success) continue;
+      if (!r.ok()) continue;
       ++successes;
       ASSERT_EQ(r.rule, rule);
       ASSERT_EQ(grid_walk_problem(map.grid, r.path, rule), "") << to_string(rule) << " map " << i;
@@ -324,8 +324,8 @@ TEST(Aco, MoreIterationsNeverLengthen) {
     const MapInstance map = random_map(0.2, 9000 + i);
     const PlanResult short_run = run(make("aco", {{"iterations", 10}}), map, 5, scratch);
     const PlanResult long_run = run(make("aco", {{"iterations", 40}}), map, 5, scratch);
-    if (!short_run.success) continue;
-    ASSERT_TRUE(long_run.success);
+    if (!short_run.ok()) continue;
+    ASSERT_TRUE(long_run.ok());
     EXPECT_LE(path_length(long_run.path), path_length(short_run.path) + 1e-9) << "map " << i;
   }
 }

@@ -272,7 +272,7 @@ TEST_P(FamilyPaths, ValidateUnderOwnRuleAndSmoothedAreCollisionFree) {
   for (int i = 0; i < kMaps && failures < 5; ++i) {
     const MapInstance& m = maps()[static_cast<std::size_t>(i)];
     const PlanResult r = run(planner, m, scratch);
-    if (!r.success) {
+    if (!r.ok()) {
       ++failures;
       ADD_FAILURE() << c.name << " map " << i << ": " << r.message;
       continue;
@@ -317,7 +317,7 @@ TEST(Postprocess, ShortcutsNeverLengthenNeverCollideAndSmoothingStaysFree) {
   for (int i = 0; i < kMaps && failures < 10; ++i) {
     const MapInstance& m = maps()[static_cast<std::size_t>(i)];
     const PlanResult base = run(astar, m, scratch);
-    ASSERT_TRUE(base.success);
+    ASSERT_TRUE(base.ok());
     for (std::size_t k = 0; k < std::size(modes); ++k) {
       for (double margin : {0.0, 0.5}) {
         const SightRule sight = sight_rule(base.rule, margin);
@@ -392,11 +392,11 @@ TEST(Postprocess, AStarAndDijkstraTakeThePostprocessingParameters) {
     for (int i = 0; i < 100; ++i) {
       const MapInstance& m = maps()[static_cast<std::size_t>(i)];
       const PlanResult base = run(plain, m, scratch);
-      ASSERT_TRUE(base.success) << name << " map " << i;
+      ASSERT_TRUE(base.ok()) << name << " map " << i;
       PlanResult expected = base;
       apply_postprocessing(m.grid, options, expected);
       const PlanResult r = run(post, m, scratch);
-      ASSERT_TRUE(r.success) << name << " map " << i;
+      ASSERT_TRUE(r.ok()) << name << " map " << i;
       EXPECT_EQ(r.path, expected.path) << name << " map " << i;
       EXPECT_TRUE(validate_path(m.grid, m.start, m.goal, r.path, r.rule).ok) << name << " " << i;
       EXPECT_TRUE(samples_free(m.grid, r.path)) << name << " map " << i;
@@ -404,7 +404,7 @@ TEST(Postprocess, AStarAndDijkstraTakeThePostprocessingParameters) {
       for (const auto& phase : r.phases) timed = timed || phase.name == "smoothing";
       EXPECT_TRUE(timed) << name;
       const PlanResult c = run(cut, m, scratch);
-      ASSERT_TRUE(c.success);
+      ASSERT_TRUE(c.ok());
       EXPECT_LE(length(c.path), length(base.path) + 1e-9) << name << " map " << i;
       EXPECT_TRUE(validate_path(m.grid, m.start, m.goal, c.path, c.rule).ok) << name << " " << i;
       shorter += length(c.path) < length(base.path) - 1e-9 ? 1 : 0;
@@ -447,7 +447,7 @@ TEST(PaperProperties, ImprovedInternalTurnsLessThanClassicAStar) {
   for (const MapInstance& m : maps()) {
     const PlanResult a = run(astar, m, scratch);
     const PlanResult b = run(inner, m, scratch);
-    ASSERT_TRUE(a.success && b.success);
+    ASSERT_TRUE(a.ok() && b.ok());
     turn_count.add(static_cast<double>(turns(m.grid, b.path)),
                    static_cast<double>(turns(m.grid, a.path)));
     turn_angle.add(compute_path_metrics(m.grid, b.path).turn_angle_rad,
@@ -468,7 +468,7 @@ TEST(PaperProperties, NoSqueezeNeverPassesBetweenDiagonalObstacles) {
     const auto classic = make("astar");
     for (const MapInstance& m : maps()) {
       const PlanResult r = run(planner, m, scratch);
-      ASSERT_TRUE(r.success);
+      ASSERT_TRUE(r.ok());
       ASSERT_EQ(r.rule, CornerRule::no_squeeze);
       // The whole polyline, exactly: no segment passes through a vertex whose two side cells are
       // both obstacles (cells mode under no_squeeze; the validator's test).
@@ -506,7 +506,7 @@ TEST(PaperProperties, KinFiveDirectionsExpandFewerThanEight) {
   for (const MapInstance& m : maps()) {
     const PlanResult a = run(five, m, scratch);
     const PlanResult b = run(eight, m, scratch);
-    ASSERT_TRUE(a.success && b.success);
+    ASSERT_TRUE(a.ok() && b.ok());
     expanded.add(static_cast<double>(a.expanded_nodes), static_cast<double>(b.expanded_nodes));
     children.add(generated(a), generated(b));
     ASSERT_GT(generated(a), 0.0);
@@ -534,7 +534,7 @@ TEST(PaperProperties, AltInverseRateExpandsNoMoreOnLowDensity) {
     const MapInstance m = random_map(i, 0.5);  // densities 0.05-0.175
     const PlanResult a = run(inverse, m, scratch);
     const PlanResult b = run(admissible, m, scratch);
-    ASSERT_TRUE(a.success && b.success);
+    ASSERT_TRUE(a.ok() && b.ok());
     expanded.add(static_cast<double>(a.expanded_nodes), static_cast<double>(b.expanded_nodes));
     path_len.add(length(a.path), length(b.path));
   }
@@ -555,7 +555,7 @@ TEST(PaperProperties, MaStarPrintedGExpandsFewerThanAStar) {
     const PlanResult a = run(astar, m, scratch);
     const PlanResult b = run(ma, m, scratch);
     const PlanResult c = run(ma_path, m, scratch);
-    ASSERT_TRUE(a.success && b.success && c.success);
+    ASSERT_TRUE(a.ok() && b.ok() && c.ok());
     // g_mode path is A*: the same search, node for node.
     EXPECT_EQ(c.expanded_nodes, a.expanded_nodes);
     // The removals never lengthen A*'s path.
@@ -580,7 +580,7 @@ TEST(PaperProperties, BidirectionalAStarIsOptimal) {
     const nlohmann::json params = {{"corner_rule", rule}, {"diagonal_cost", diagonal}};
     const PlanResult b = run(make("bidir_astar", params), m, scratch);
     const PlanResult d = run(make("dijkstra", params), m, scratch);
-    ASSERT_TRUE(b.success && d.success) << i;
+    ASSERT_TRUE(b.ok() && d.ok()) << i;
     ASSERT_TRUE(validate_path(m.grid, m.start, m.goal, b.path, b.rule).ok) << i;
     // Compare costs under the run's own diagonal cost.
     auto cost = [&](const std::vector<Point>& p) {
@@ -611,10 +611,10 @@ TEST(FamilyEdges, StartEqualsGoalAndUnreachableAndDeadline) {
       continue;
     const auto p = make(name);
     const PlanResult same = p.planner->plan(PlanRequest{grid, {2, 2}, {2, 2}, rng, scratch});
-    ASSERT_TRUE(same.success) << name;
+    ASSERT_TRUE(same.ok()) << name;
     EXPECT_TRUE(validate_path(grid, {2, 2}, {2, 2}, same.path, same.rule).ok) << name;
     const PlanResult none = p.planner->plan(PlanRequest{grid, {1, 1}, {10, 10}, rng, scratch});
-    EXPECT_FALSE(none.success) << name;
+    EXPECT_FALSE(none.ok()) << name;
     EXPECT_EQ(none.failure, Failure::no_path) << name;
     const PlanResult bad = p.planner->plan(PlanRequest{grid, {6, 3}, {1, 1}, rng, scratch});
     EXPECT_EQ(bad.failure, Failure::invalid_input) << name;

@@ -65,8 +65,8 @@ PlanResult run(const ConfiguredPlanner& p, const MapInstance& m, Scratch& scratc
 // circle clear, and is never longer than the MA* path of the same map and parameters.
 void expect_sound(const PlanResult& hma, const PlanResult& ma, const MapInstance& m,
                   const std::string& where) {
-  ASSERT_TRUE(hma.success) << where << ": " << hma.message;
-  ASSERT_TRUE(ma.success) << where;
+  ASSERT_TRUE(hma.ok()) << where << ": " << hma.message;
+  ASSERT_TRUE(ma.ok()) << where;
   EXPECT_EQ(hma.rule, ma.rule) << where;
   EXPECT_EQ(hma.expanded_nodes, ma.expanded_nodes) << where;
   const ValidationResult v = validate_path(m.grid, m.start, m.goal, hma.path, hma.rule);
@@ -122,7 +122,7 @@ TEST(HmaStar, SoundOnPaperMapsAndPairedAgainstAStar) {
     const PlanResult h = run(hma, m, scratch);
     const PlanResult a = run(ma, m, scratch);
     const PlanResult s = run(astar, m, scratch);
-    ASSERT_TRUE(s.success);
+    ASSERT_TRUE(s.ok());
     expect_sound(h, a, m, "map " + std::to_string(i));
     if (::testing::Test::HasFatalFailure()) return;
     l_hma.push_back(polyline_length(h.path));
@@ -210,7 +210,7 @@ TEST(HmaStar, OtherCornerRulesAndGMode) {
 TEST(HmaStar, ReportsItsExtrasAndPhases) {
   Scratch scratch;
   const PlanResult r = run(make("hma_star"), maps()[3], scratch);
-  ASSERT_TRUE(r.success);
+  ASSERT_TRUE(r.ok());
   bool windows = false, improvements = false;
   for (const auto& [name, value] : r.extra) {
     windows |= name == "pso_windows";

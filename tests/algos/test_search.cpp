@@ -136,7 +136,7 @@ TEST_P(MovingAiScenarios, OptimalOnEveryScenario) {
     }
     const PlanResult r = run(*planner, grid, s.start, s.goal, scratch);
     const std::string problem =
-        r.success ? path_problem(grid, r.path, s.start, s.goal, CornerRule::no_corner_cut)
+        r.ok() ? path_problem(grid, r.path, s.start, s.goal, CornerRule::no_corner_cut)
                   : std::string("failed: ") + to_string(r.failure);
     if (!problem.empty() || !near(path_length(r.path), s.optimal_length, 1e-6)) {
       ++failures;
@@ -196,7 +196,7 @@ TEST_P(CornerRules, AStarMatchesDijkstraOnRandomMaps) {
     const double ref = *shortest_length(grid, q.start, q.goal, rule, scratch);
     for (const auto* p : {&astar, &astar_octile, &dijkstra}) {
       const PlanResult r = run(*p, grid, q.start, q.goal, scratch);
-      ASSERT_TRUE(r.success) << p->info->name << " map " << k;
+      ASSERT_TRUE(r.ok()) << p->info->name << " map " << k;
       ASSERT_NEAR(path_length(r.path), ref, 1e-9 * std::max(1.0, ref))
           << p->info->name << " map " << k;
       ASSERT_EQ(path_problem(grid, r.path, q.start, q.goal, rule), "")
@@ -242,7 +242,7 @@ TEST(Unsolvable, WallGivesNoPath) {
   Scratch scratch;
   for (const char* name : {"astar", "dijkstra"}) {
     const PlanResult r = run(make(name, nlohmann::json::object()), grid, {2, 3}, {35, 20}, scratch);
-    EXPECT_FALSE(r.success) << name;
+    EXPECT_FALSE(r.ok()) << name;
     EXPECT_EQ(r.failure, Failure::no_path) << name;
     EXPECT_TRUE(r.path.empty()) << name;
     EXPECT_EQ(r.expanded_nodes, 20 * 30) << name;  // the whole reachable side, once each
@@ -266,7 +266,7 @@ TEST(Deadline, ExpiredDeadlineGivesLimit) {
   for (const char* name : {"astar", "dijkstra"}) {
     const PlanResult r = run(make(name, nlohmann::json::object()), grid, {0, 1023}, {1023, 0},
                              scratch, Deadline::after(std::chrono::nanoseconds(0)));
-    EXPECT_FALSE(r.success) << name;
+    EXPECT_FALSE(r.ok()) << name;
     EXPECT_EQ(r.failure, Failure::limit) << name;
   }
 }
@@ -297,19 +297,19 @@ TEST(ScratchReuse, RepeatsAndSizeChanges) {
     const PlanResult d = run(p, small, s_start, s_goal, scratch);  // back to the small grid
     const PlanResult e = run(p, large, l_start, l_goal, fresh);
     for (const PlanResult* r : {&a, &b, &d}) {
-      EXPECT_EQ(r->success, a.success) << name;
+      EXPECT_EQ(r->ok(), a.ok()) << name;
       EXPECT_EQ(r->path, a.path) << name;
       EXPECT_EQ(r->expanded_nodes, a.expanded_nodes) << name;
     }
-    EXPECT_EQ(c.success, e.success) << name;
+    EXPECT_EQ(c.ok(), e.ok()) << name;
     EXPECT_EQ(c.path, e.path) << name;
     EXPECT_EQ(c.expanded_nodes, e.expanded_nodes) << name;
     const auto ref_small =
         shortest_length(small, s_start, s_goal, CornerRule::no_corner_cut, scratch);
     const auto ref_large =
         shortest_length(large, l_start, l_goal, CornerRule::no_corner_cut, scratch);
-    EXPECT_EQ(a.success, ref_small.has_value()) << name;
-    EXPECT_EQ(c.success, ref_large.has_value()) << name;
+    EXPECT_EQ(a.ok(), ref_small.has_value()) << name;
+    EXPECT_EQ(c.ok(), ref_large.has_value()) << name;
     if (ref_small) {
       EXPECT_NEAR(path_length(a.path), *ref_small, 1e-9) << name;
     }
@@ -350,7 +350,7 @@ TEST(StartIsGoal, SingleWaypoint) {
   Grid grid(5, 5);
   Scratch scratch;
   const PlanResult r = run(make("astar", nlohmann::json::object()), grid, {2, 2}, {2, 2}, scratch);
-  ASSERT_TRUE(r.success);
+  ASSERT_TRUE(r.ok());
   ASSERT_EQ(r.path.size(), 1U);
   EXPECT_EQ(r.path[0], (Point{2.5, 2.5}));
   EXPECT_EQ(r.expanded_nodes, 1);

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The dependency rule of docs/ARCHITECTURE.md, checked on the includes: core/ includes nothing of
+# ours; generators/ and algos/ stand on core/ only and never include each other (nor engine/);
+# at the top of algos/ sit only the planner interface and the registry.
+# Usage: check_dependencies.sh SOURCE_DIR
+set -uo pipefail
+cd "${1:?usage: $0 SOURCE_DIR}"
+fail=0
+forbid() {  # FOLDER PATTERN WHY
+  local hits
+  hits=$(grep -rnE "#include \"($2)/" --include='*.h' --include='*.cpp' "$1" || true)
+  if [ -n "$hits" ]; then
+    echo "FAIL $1/ must not include $2/ ($3):"
+    echo "$hits"
+    fail=1
+  else
+    echo "ok   $1/ includes no $2/"
+  fi
+}
+forbid core 'generators|algos|engine' 'core knows no map source, no planner, no sweep'
+forbid generators 'algos|engine' 'a generator knows no planner'
+forbid algos 'generators|engine' 'a planner sees a grid, never how it was made'
+top=$(find algos -maxdepth 1 -name '*.cpp' -printf '%f\n' | sort | tr '\n' ' ')
+if [ "$top" = "planner.cpp registry.cpp " ]; then
+  echo "ok   algos/ top level holds only the interface and the registry"
+else
+  echo "FAIL algos/ top level holds: $top(expected planner.cpp registry.cpp)"
+  fail=1
+fi
+exit $fail

@@ -7,7 +7,7 @@
 #include <thread>
 
 #include "engine/build_info.h"
-
+#include "engine/git_revision.h"
 
 namespace agv {
 

@@ -12,11 +12,9 @@
 #include <chrono>
 #include <cstring>
 #include <iostream>
-#include <optional>
 #include <stdexcept>
 
-#include "engine/run_record.h"
-#include "engine/sweep_plan.h"
+#include "engine/map_task.h"
 
 extern char** environ;
 
@@ -150,21 +148,26 @@ std::string WorkerProcess::describe_exit() {
   return "worker vanished";
 }
 
-WorkerProcess::Reply WorkerProcess::run(std::int64_t task, std::size_t planner,
-                                        double hard_limit_s) {
-  Reply reply;
+void WorkerProcess::start_task(std::int64_t task, std::span<const std::size_t> planners) {
   if (pid_ < 0) spawn();
-  const auto start = Clock::now();
-  const auto deadline =
-      start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(hard_limit_s));
+  const nlohmann::json request = {
+      {"task", task}, {"planners", std::vector<std::size_t>(planners.begin(), planners.end())}};
   try {
-    write_all(to_child_, nlohmann::json{{"task", task}, {"planner", planner}}.dump() + "\n");
+    write_all(to_child_, request.dump() + "\n");
   } catch (const std::runtime_error&) {
-    // Died between runs; fall through to reading, which reports the death.
+    // Died between tasks; next_run's read reports the death.
   }
+}
+
+WorkerProcess::Reply WorkerProcess::next_run(double hard_limit_s) {
+  Reply reply;
+  const auto start = Clock::now();
+  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
+                                    std::chrono::duration<double>(hard_limit_s));
   std::string line;
   const ReadStatus status = read_line(deadline, line);
-  reply.wall_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
+  reply.wall_ns =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
   switch (status) {
     case ReadStatus::line:
       reply.record = nlohmann::json::parse(line, nullptr, false);
@@ -204,42 +207,23 @@ int worker_main(std::int64_t memory_mb) {
   std::string line;
   if (!std::getline(std::cin, line)) return 1;
   SweepConfig config;
-  std::vector<ConfiguredPlanner> planners;
+  MapTaskWorkspace workspace;
   try {
     config = parse_config(nlohmann::json::parse(line).at("config"));
-    planners = configure_planners(config);
+    workspace.planners = configure_planners(config);
   } catch (const std::exception& e) {
     std::cout << nlohmann::json{{"fatal", e.what()}}.dump() << "\n" << std::flush;
     return 2;
   }
   std::cout << nlohmann::json{{"ready", true}}.dump() << "\n" << std::flush;
-  const SweepPlan plan = plan_sweep(config);
-  const std::string hash = config_hash(config);
-  Scratch scratch;
-  std::int64_t cached_task = -1;
-  std::optional<MapInstance> map;
-  MapSlot slot;
-  const auto budget = std::chrono::duration_cast<std::chrono::nanoseconds>(
-      std::chrono::duration<double>(config.time_limit_s));
+  const MapTaskContext context(config);
   while (std::getline(std::cin, line)) {
-    const auto req = nlohmann::json::parse(line);
-    const auto task = req.at("task").get<std::int64_t>();
-    const auto p = req.at("planner").get<std::size_t>();
-    const SweepCell& cell = plan.cell_of(task);
-    const int map_index = plan.map_index_of(task);
-    if (task != cached_task) {
-      Rng rng = map_rng(config.seed, cell, map_index);
-      map = make_map(cell.spec, rng);
-      slot = map_slot_of(*map);
-      cached_task = task;
-    }
-    MapReference ref(map->grid, map->start, map->goal);
-    Rng prng = run_rng(config.seed, cell, map_index, config.planners[p].label);
-    const RunOutput out = execute_run(*planners[p].planner, ref, prng, scratch,
-                                      Deadline::after(budget), config.motion);
-    std::cout << run_record(hash, config.seed, cell, map_index, config.planners[p], slot, out).dump()
-              << "\n"
-              << std::flush;
+    const auto request = nlohmann::json::parse(line);
+    const auto task = request.at("task").get<std::int64_t>();
+    const auto planners = request.at("planners").get<std::vector<std::size_t>>();
+    run_map_task(context, task, planners, workspace, [](const MapTaskRun& run) {
+      std::cout << run.record().dump() << "\n" << std::flush;
+    });
   }
   return 0;
 }

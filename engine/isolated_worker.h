@@ -7,18 +7,21 @@
 // Protocol, one JSON object per line over the worker's stdin/stdout: the parent sends the config
 // as run ({"config": ...}) once, and the worker answers {"ready": true}, or {"fatal": message}
 // when it cannot take that config (a failed sweep, not a crashed run); then the parent requests
-// {"task": t, "planner": p} and the worker answers each with the run's record
-// (engine/run_record.h). Workers are started with posix_spawn, which is
-// safe from a multi-threaded parent (no fork of a process holding other threads' locks).
+// map tasks, {"task": t, "planners": [p, ...]}, and the worker runs them with the in-process
+// runner's own run_map_task (engine/map_task.h), answering with each run's record
+// (engine/run_record.h) as soon as the run is done. The parent gives every run its own hard
+// limit; after a fault it starts a fresh worker on the task's remaining planners. Workers are
+// started with posix_spawn, which is safe from a multi-threaded parent (no fork of a process
+// holding other threads' locks).
 
 #include <sys/types.h>
 
 #include <chrono>
 #include <cstdint>
+#include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "engine/run_executor.h"
 
@@ -26,8 +29,8 @@ namespace agv {
 
 struct IsolationOptions {
   bool enabled = false;
-  double hard_limit_s = 0.0;        // per run; 0 = twice the config's time_limit_s + 1 s
-  std::int64_t memory_mb = 4096;    // RLIMIT_AS of each worker
+  double hard_limit_s = 0.0;      // per run; 0 = twice the config's time_limit_s + 1 s
+  std::int64_t memory_mb = 4096;  // RLIMIT_AS of each worker
   // The worker program: default this executable's `worker` subcommand. Tests pass their own
   // binary, whose registry has deliberately faulty planners.
   std::vector<std::string> command;
@@ -41,14 +44,18 @@ class WorkerProcess {
   WorkerProcess& operator=(const WorkerProcess&) = delete;
 
   struct Reply {
-    bool ok = false;          // record holds the worker's record
+    bool ok = false;  // record holds the worker's record
     nlohmann::json record;
     Outcome outcome = Outcome::crash;  // when !ok: timeout or crash
     std::string message;
     std::int64_t wall_ns = 0;
   };
-  // One run; restarts the worker after a timeout or a death.
-  Reply run(std::int64_t task, std::size_t planner, double hard_limit_s);
+  // Asks for the runs of `planners` (config indices, in this order) on map task `task`; starts
+  // a worker first when none is running (none is after a reply that is not ok).
+  void start_task(std::int64_t task, std::span<const std::size_t> planners);
+  // The reply of the task's next run, within hard_limit_s of this call. A reply that is not ok
+  // leaves no worker: the task's remaining planners need start_task again.
+  Reply next_run(double hard_limit_s);
 
  private:
   using Clock = std::chrono::steady_clock;

@@ -6,27 +6,20 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
 
+#include "core/input_error.h"
 #include "engine/journal.h"
+#include "engine/map_task.h"
 #include "engine/progress.h"
-#include "engine/run_record.h"
 
 namespace agv {
 
 namespace {
-
-// Per worker thread: scratch buffers and its own planner objects (planners keep no shared
-// state), or, isolated, its own worker process.
-struct Worker {
-  Scratch scratch;
-  std::vector<ConfiguredPlanner> planners;
-  std::unique_ptr<WorkerProcess> process;
-};
-
 
 void fill_run_slot(RunSlot& slot, const RunOutput& out) {
   slot.outcome = out.outcome;
@@ -38,24 +31,6 @@ void fill_run_slot(RunSlot& slot, const RunOutput& out) {
 }
 
 }  // namespace
-
-std::vector<ConfiguredPlanner> configure_planners(const SweepConfig& config) {
-  std::vector<ConfiguredPlanner> planners;
-  for (std::size_t i = 0; i < config.planners.size(); ++i) {
-    const auto& p = config.planners[i];
-    planners.push_back(configure_planner(p.name, p.params, "planners[" + std::to_string(i) + "]"));
-  }
-  return planners;
-}
-
-MapSlot map_slot_of(const MapInstance& inst) {
-  MapSlot ms;
-  ms.rejections = inst.rejections;
-  ms.obstacle_fraction = static_cast<double>(inst.grid.obstacle_count()) /
-                         (static_cast<double>(inst.grid.width()) * inst.grid.height());
-  ms.done = true;
-  return ms;
-}
 
 SweepResults empty_results(const SweepConfig& config) {
   SweepResults res;
@@ -89,145 +64,220 @@ void update_completeness(SweepResults& results) {
   results.complete = c.runs_present == c.runs_expected;
 }
 
-SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
+namespace {
+
+void check_shard(const SweepOptions& options) {
   if (options.shard_count < 1 || options.shard_index < 0 ||
       options.shard_index >= options.shard_count)
     throw InputError("--shard: index must be in [0, count)");
-  SweepResults res = empty_results(config);
-  res.shard_index = options.shard_index;
-  res.shard_count = options.shard_count;
-  const std::int64_t tasks = res.plan.map_tasks();
-  const std::string hash = config_hash(config);
+}
 
-  std::string journal_path = options.runs_path;
-  if (!options.resume_path.empty()) {
-    if (!journal_path.empty() && journal_path != options.resume_path)
-      throw InputError("--resume: the journal is appended to; --runs-out must be empty or the same file");
-    journal_path = options.resume_path;
-    res.restored_runs = restore_journal(options.resume_path, hash, res).records;
-  }
-  JournalWriter journal(journal_path, !options.resume_path.empty());
+// The journal this call writes: a resumed sweep appends to the one it restores.
+std::string journal_path_of(const SweepOptions& options) {
+  if (options.resume_path.empty()) return options.runs_path;
+  if (!options.runs_path.empty() && options.runs_path != options.resume_path)
+    throw InputError(
+        "--resume: the journal is appended to; --runs-out must be empty or the same file");
+  return options.resume_path;
+}
 
-  const int hw = tbb::info::default_concurrency();
-  res.threads = options.threads > 0 ? options.threads : hw;
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
-                            static_cast<std::size_t>(res.threads));
+// The planners of `task` still to run: scheduled there and not restored, in config order.
+std::vector<std::size_t> pending_planners(const SweepResults& res, std::int64_t task) {
+  std::vector<std::size_t> pending;
+  for (std::size_t p = 0; p < res.labels.size(); ++p)
+    if (res.scheduled(task, p) && !res.run(task, p).done) pending.push_back(p);
+  return pending;
+}
 
-  // The map tasks this call must (still) run.
+// The map tasks of this call's shard with a planner still to run.
+std::vector<std::int64_t> pending_tasks(const SweepResults& res, const SweepOptions& options) {
   std::vector<std::int64_t> todo;
-  for (std::int64_t t = 0; t < tasks; ++t) {
+  for (std::int64_t t = 0; t < res.plan.map_tasks(); ++t) {
     if (t % options.shard_count != options.shard_index) continue;
-    bool pending = false;
-    for (std::size_t p = 0; p < res.labels.size(); ++p)
-      pending = pending || (res.scheduled(t, p) && !res.run(t, p).done);
-    if (pending) todo.push_back(t);
+    if (!pending_planners(res, t).empty()) todo.push_back(t);
+  }
+  return todo;
+}
+
+// How an isolated sweep starts its worker processes and bounds their runs.
+struct WorkerLaunch {
+  std::vector<std::string> command;
+  std::string config_line;
+  double hard_limit_s = 0.0;
+};
+
+WorkerLaunch worker_launch(const SweepConfig& config, const IsolationOptions& iso) {
+  WorkerLaunch launch;
+  launch.command = iso.command;
+  if (launch.command.empty()) launch.command = {"/proc/self/exe", "worker"};
+  launch.config_line = nlohmann::json{{"config", config_as_run(config)}}.dump();
+  launch.hard_limit_s = iso.hard_limit_s > 0 ? iso.hard_limit_s : 2.0 * config.time_limit_s + 1.0;
+  return launch;
+}
+
+// Per worker thread: in process, its own planners and scratch; isolated, its own worker process.
+struct Worker {
+  MapTaskWorkspace workspace;
+  std::unique_ptr<WorkerProcess> process;
+};
+
+// What the map tasks of one run_sweep call share. Each task's slots are written by the one
+// thread that runs it.
+struct SweepState {
+  SweepState(const MapTaskContext& task_context, SweepResults& sweep_results, bool journaled)
+      : context(task_context),
+        results(sweep_results),
+        restorer(task_context.config_hash, sweep_results),
+        keep_lines(journaled) {}
+
+  const MapTaskContext& context;
+  SweepResults& results;
+  RecordRestorer restorer;  // worker records into slots
+  bool keep_lines;          // whether the runs' records become journal lines
+  std::atomic<std::int64_t> executed{0};
+};
+
+// Runs the task's pending planners in this thread; returns their journal lines.
+std::string run_task_in_process(SweepState& s, MapTaskWorkspace& workspace, std::int64_t task) {
+  std::string lines;
+  const std::vector<std::size_t> planners = pending_planners(s.results, task);
+  s.results.maps[static_cast<std::size_t>(task)] =
+      run_map_task(s.context, task, planners, workspace, [&](const MapTaskRun& run) {
+        fill_run_slot(s.results.run(task, run.planner), run.output);
+        ++s.executed;
+        if (s.keep_lines) lines += run.record().dump() + '\n';
+      });
+  return lines;
+}
+
+// Runs the task's pending planners in this thread's worker process; returns their journal
+// lines. A run the worker does not answer (it hung, died or sent garbage) is recorded here with
+// its outcome, and a fresh worker takes the task's remaining planners.
+std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard_limit_s,
+                              std::int64_t task) {
+  std::string lines;
+  const std::vector<std::size_t> planners = pending_planners(s.results, task);
+  std::size_t next = 0;
+  while (next < planners.size()) {
+    process.start_task(task, std::span(planners).subspan(next));
+    bool alive = true;
+    while (alive && next < planners.size()) {
+      const std::size_t p = planners[next++];
+      WorkerProcess::Reply reply = process.next_run(hard_limit_s);
+      alive = reply.ok;
+      nlohmann::json record;
+      if (reply.ok) {
+        record = std::move(reply.record);
+      } else {
+        MapSlot& ms = s.results.maps[static_cast<std::size_t>(task)];
+        if (!ms.done) ms = regenerate_map_slot(s.context, task);
+        record =
+            lost_run_record(s.context, task, p, ms, reply.outcome, reply.message, reply.wall_ns);
+      }
+      s.restorer.restore(record, "worker record");
+      ++s.executed;
+      if (s.keep_lines) lines += record.dump() + '\n';
+    }
+  }
+  return lines;
+}
+
+// The first failure of any map task: the sweep stops taking tasks and throws it at the end,
+// as an InputError when the config or a map's input caused it.
+class FirstFailure {
+ public:
+  void record(const SweepPlan& plan, std::int64_t task, const std::exception& e) {
+    std::lock_guard lock(mutex_);
+    if (!message_) {
+      message_ = "cell " + plan.cell_of(task).key + ", map " +
+                 std::to_string(plan.map_index_of(task)) + ": " + e.what();
+      is_input_ = dynamic_cast<const std::invalid_argument*>(&e) != nullptr ||
+                  dynamic_cast<const InputError*>(&e) != nullptr;
+    }
+    failed_ = true;
+  }
+  bool failed() const { return failed_.load(std::memory_order_relaxed); }
+  void rethrow() const {
+    if (!message_) return;
+    if (is_input_) throw InputError(*message_);
+    throw std::runtime_error(*message_);
   }
 
-  const IsolationOptions& iso = options.isolation;
-  const double hard_limit = iso.hard_limit_s > 0 ? iso.hard_limit_s : 2.0 * config.time_limit_s + 1.0;
-  std::vector<std::string> worker_command = iso.command;
-  if (worker_command.empty()) worker_command = {"/proc/self/exe", "worker"};
-  const std::string config_line = nlohmann::json{{"config", config_as_run(config)}}.dump();
+ private:
+  std::mutex mutex_;
+  std::optional<std::string> message_;
+  bool is_input_ = false;
+  std::atomic<bool> failed_{false};
+};
 
+// Runs `todo` over oneTBB until every task is done, a task fails or a stop is requested (runs
+// in flight finish). Returns whether a stop request left tasks untaken.
+bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
+               const SweepOptions& options, JournalWriter& journal, FirstFailure& failure) {
+  const bool isolated = options.isolation.enabled;
+  const WorkerLaunch launch = worker_launch(state.context.config, options.isolation);
   ProgressMeter progress(static_cast<std::int64_t>(todo.size()), options.progress);
   tbb::enumerable_thread_specific<Worker> workers([&] {
     Worker w;
-    if (iso.enabled) {
-      w.process = std::make_unique<WorkerProcess>(worker_command, iso.memory_mb, config_line);
+    if (isolated) {
+      w.process = std::make_unique<WorkerProcess>(launch.command, options.isolation.memory_mb,
+                                                  launch.config_line);
     } else {
-      w.planners = configure_planners(config);
+      w.workspace.planners = configure_planners(state.context.config);
     }
     return w;
   });
-
-  // Restores worker records into slots; each task's slots are written by one thread only.
-  RecordRestorer restorer(hash, res);
-  std::mutex error_mutex;
-  std::optional<std::string> error;
-  bool error_is_input = false;
-  std::atomic<bool> failed{false};
   std::atomic<bool> stopped{false};
-  std::atomic<std::int64_t> executed{0};
-  const auto budget = std::chrono::duration_cast<std::chrono::nanoseconds>(
-      std::chrono::duration<double>(config.time_limit_s));
-  const auto t0 = std::chrono::steady_clock::now();
-
   tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t i) {
-    if (failed.load(std::memory_order_relaxed)) return;
+    if (failure.failed()) return;
     if (options.stop != nullptr && options.stop->load()) {
       stopped = true;
       return;
     }
     const std::int64_t task = todo[i];
-    const SweepCell& cell = res.plan.cell_of(task);
-    const int map_index = res.plan.map_index_of(task);
-    MapSlot& ms = res.maps[static_cast<std::size_t>(task)];
-    std::string lines;
     try {
       Worker& w = workers.local();  // may start an isolation worker, which may fail
-      if (!iso.enabled) {
-        Rng rng = map_rng(config.seed, cell, map_index);
-        const MapInstance inst = make_map(cell.spec, rng);
-        ms = map_slot_of(inst);
-        MapReference ref(inst.grid, inst.start, inst.goal);
-        for (std::size_t p = 0; p < config.planners.size(); ++p) {
-          RunSlot& slot = res.run(task, p);
-          if (slot.done || !res.scheduled(task, p)) continue;
-          Rng prng = run_rng(config.seed, cell, map_index, config.planners[p].label);
-          const RunOutput out = execute_run(*w.planners[p].planner, ref, prng, w.scratch,
-                                            Deadline::after(budget), config.motion);
-          fill_run_slot(slot, out);
-          ++executed;
-          if (journal.enabled())
-            lines += run_record(hash, config.seed, cell, map_index, config.planners[p], ms, out)
-                         .dump() + '\n';
-        }
-      } else {
-        for (std::size_t p = 0; p < config.planners.size(); ++p) {
-          if (res.run(task, p).done || !res.scheduled(task, p)) continue;
-          WorkerProcess::Reply reply = w.process->run(task, p, hard_limit);
-          nlohmann::json record;
-          if (reply.ok) {
-            record = std::move(reply.record);
-          } else {
-            // The worker died or was killed: the parent writes the run's record itself.
-            if (!ms.done) {
-              Rng rng = map_rng(config.seed, cell, map_index);
-              ms = map_slot_of(make_map(cell.spec, rng));
-            }
-            RunOutput out;
-            out.metrics.fill(std::numeric_limits<double>::quiet_NaN());
-            out.outcome = reply.outcome;
-            out.message = reply.message;
-            out.plan_time_ns = reply.wall_ns;
-            record = run_record(hash, config.seed, cell, map_index, config.planners[p], ms, out);
-          }
-          restorer.restore(record, "worker record");
-          ++executed;
-          if (journal.enabled()) lines += record.dump() + '\n';
-        }
-      }
+      const std::string lines =
+          isolated ? run_task_isolated(state, *w.process, launch.hard_limit_s, task)
+                   : run_task_in_process(state, w.workspace, task);
       if (journal.enabled() && !lines.empty()) journal.write(lines);
     } catch (const std::exception& e) {
-      std::lock_guard lock(error_mutex);
-      if (!error) {
-        error = "cell " + cell.key + ", map " + std::to_string(map_index) + ": " + e.what();
-        error_is_input = dynamic_cast<const std::invalid_argument*>(&e) != nullptr ||
-                         dynamic_cast<const InputError*>(&e) != nullptr;
-      }
-      failed = true;
+      failure.record(state.results.plan, task, e);
     }
     progress.advance();
   });
   progress.finish();
+  return stopped.load();
+}
+
+}  // namespace
+
+SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
+  check_shard(options);
+  SweepResults res = empty_results(config);
+  res.shard_index = options.shard_index;
+  res.shard_count = options.shard_count;
+  const MapTaskContext context(config);
+
+  const bool resume = !options.resume_path.empty();
+  const std::string journal_path = journal_path_of(options);
+  if (resume)
+    res.restored_runs = restore_journal(options.resume_path, context.config_hash, res).records;
+  JournalWriter journal(journal_path, resume);
+
+  res.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                            static_cast<std::size_t>(res.threads));
+
+  const std::vector<std::int64_t> todo = pending_tasks(res, options);
+  SweepState state(context, res, journal.enabled());
+  FirstFailure failure;
+  const auto t0 = std::chrono::steady_clock::now();
+  res.interrupted = run_tasks(state, todo, options, journal, failure);
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  res.executed_runs = executed.load();
-  res.interrupted = stopped.load();
+  res.executed_runs = state.executed.load();
   update_completeness(res);
-  if (error) {
-    if (error_is_input) throw InputError(*error);
-    throw std::runtime_error(*error);
-  }
+  failure.rethrow();
   return res;
 }
 

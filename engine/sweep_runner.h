@@ -1,8 +1,9 @@
 #pragma once
 // The parallel sweep: oneTBB over map tasks; each task generates its map once and runs every
-// planner on it in config order, so all planners see the same maps (paired comparisons). Only a
-// few scalars per run are kept, indexed by task, so every statistic is computed afterwards in
-// task order and is identical on any thread count; paths and per-run records stream out.
+// planner on it in config order (engine/map_task.h), so all planners see the same maps (paired
+// comparisons). Only a few scalars per run are kept, indexed by task, so every statistic is
+// computed afterwards in task order and is identical on any thread count; paths and per-run
+// records stream out.
 
 #include <atomic>
 #include <cstdint>
@@ -81,16 +82,11 @@ struct SweepOptions {
   IsolationOptions isolation;
 };
 
-// Every planner of the config, configured: one set per worker thread or worker process.
-std::vector<ConfiguredPlanner> configure_planners(const SweepConfig& config);
-// What is kept of a generated map.
-MapSlot map_slot_of(const MapInstance& inst);
-
 // How much of a sweep's results are present: the report's `coverage`.
 struct Coverage {
   std::int64_t runs_expected = 0;  // scheduled runs (planner scopes counted)
   std::int64_t runs_present = 0;
-  std::int64_t maps_missing = 0;   // map tasks with no run at all
+  std::int64_t maps_missing = 0;  // map tasks with no run at all
 };
 Coverage coverage_of(const SweepResults& results);
 

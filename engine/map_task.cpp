@@ -1,0 +1,84 @@
+#include "engine/map_task.h"
+
+#include <limits>
+
+namespace agv {
+
+MapTaskContext::MapTaskContext(const SweepConfig& sweep_config)
+    : config(sweep_config),
+      plan(plan_sweep(sweep_config)),
+      config_hash(agv::config_hash(sweep_config)),
+      budget(std::chrono::duration_cast<std::chrono::nanoseconds>(
+          std::chrono::duration<double>(sweep_config.time_limit_s))) {}
+
+std::vector<ConfiguredPlanner> configure_planners(const SweepConfig& config) {
+  std::vector<ConfiguredPlanner> planners;
+  for (std::size_t i = 0; i < config.planners.size(); ++i) {
+    const auto& p = config.planners[i];
+    planners.push_back(configure_planner(p.name, p.params, "planners[" + std::to_string(i) + "]"));
+  }
+  return planners;
+}
+
+MapSlot map_slot_of(const MapInstance& inst) {
+  MapSlot ms;
+  ms.rejections = inst.rejections;
+  ms.obstacle_fraction = static_cast<double>(inst.grid.obstacle_count()) /
+                         (static_cast<double>(inst.grid.width()) * inst.grid.height());
+  ms.done = true;
+  return ms;
+}
+
+namespace {
+
+MapInstance make_task_map(const MapTaskContext& context, std::int64_t task) {
+  const SweepCell& cell = context.plan.cell_of(task);
+  Rng rng = map_rng(context.config.seed, cell, context.plan.map_index_of(task));
+  return make_map(cell.spec, rng);
+}
+
+}  // namespace
+
+MapSlot regenerate_map_slot(const MapTaskContext& context, std::int64_t task) {
+  return map_slot_of(make_task_map(context, task));
+}
+
+nlohmann::json MapTaskRun::record() const {
+  return run_record(context.config_hash, context.config.seed, context.plan.cell_of(task),
+                    context.plan.map_index_of(task), context.config.planners.at(planner), map,
+                    output);
+}
+
+nlohmann::json lost_run_record(const MapTaskContext& context, std::int64_t task,
+                               std::size_t planner, const MapSlot& map, Outcome outcome,
+                               const std::string& message, std::int64_t wall_ns) {
+  RunOutput out;
+  out.metrics.fill(std::numeric_limits<double>::quiet_NaN());
+  out.outcome = outcome;
+  out.message = message;
+  // No CPU time of the run survives its process: the parent's wall clock stands in.
+  out.plan_time_ns = wall_ns;
+  return MapTaskRun{context, task, planner, map, out}.record();
+}
+
+MapSlot run_map_task(const MapTaskContext& context, std::int64_t task,
+                     std::span<const std::size_t> planners, MapTaskWorkspace& workspace,
+                     const std::function<void(const MapTaskRun&)>& on_run) {
+  const SweepCell& cell = context.plan.cell_of(task);
+  const int map_index = context.plan.map_index_of(task);
+  const MapInstance inst = make_task_map(context, task);
+  const MapSlot slot = map_slot_of(inst);
+  // Shared by the task's runs: the optimal lengths are computed once per corner rule.
+  MapReference ref(inst.grid, inst.start, inst.goal);
+  for (const std::size_t p : planners) {
+    const PlannerEntry& entry = context.config.planners.at(p);
+    Rng rng = run_rng(context.config.seed, cell, map_index, entry.label);
+    const RunOutput out =
+        execute_run(*workspace.planners.at(p).planner, ref, rng, workspace.scratch,
+                    Deadline::after(context.budget), context.config.motion);
+    on_run(MapTaskRun{context, task, p, slot, out});
+  }
+  return slot;
+}
+
+}  // namespace agv

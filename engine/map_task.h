@@ -1,0 +1,72 @@
+#pragma once
+// One map task, the unit of work of a sweep: the task's map is generated once and every planner
+// asked for runs on it in the order given, each run measured by execute_run and recorded. The
+// sweep runner does it in process (engine/sweep_runner.h); under --isolate a worker process does
+// it (engine/isolated_worker.h). Both share this one function, so the runs, their random
+// streams and their records cannot drift apart between the two modes.
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/run_record.h"
+#include "engine/sweep_plan.h"
+
+namespace agv {
+
+// What every map task of one sweep shares: the config, its plan and hash, the run budget.
+struct MapTaskContext {
+  explicit MapTaskContext(const SweepConfig& config);
+
+  const SweepConfig& config;
+  SweepPlan plan;
+  std::string config_hash;
+  std::chrono::nanoseconds budget;  // per run: the config's time_limit_s
+};
+
+// Per worker thread or worker process: its own planner objects (planners keep no shared state)
+// and scratch buffers.
+struct MapTaskWorkspace {
+  std::vector<ConfiguredPlanner> planners;  // config order
+  Scratch scratch;
+};
+
+// Every planner of the config, configured: one set per worker thread or worker process.
+std::vector<ConfiguredPlanner> configure_planners(const SweepConfig& config);
+// What is kept of a generated map.
+MapSlot map_slot_of(const MapInstance& inst);
+// The map slot of a task, its map generated anew (the parent of a worker that died before it
+// recorded any run of the task). Throws what the generator throws.
+MapSlot regenerate_map_slot(const MapTaskContext& context, std::int64_t task);
+
+// One finished run of a map task, as handed to the caller.
+struct MapTaskRun {
+  const MapTaskContext& context;
+  std::int64_t task;
+  std::size_t planner;  // config index
+  const MapSlot& map;
+  const RunOutput& output;
+
+  // The run's journal record (engine/run_record.h); built on demand, as an in-process sweep
+  // without a journal needs none.
+  nlohmann::json record() const;
+};
+
+// The record of a run that produced none itself: its worker process died or was killed.
+nlohmann::json lost_run_record(const MapTaskContext& context, std::int64_t task,
+                               std::size_t planner, const MapSlot& map, Outcome outcome,
+                               const std::string& message, std::int64_t wall_ns);
+
+// Generates the map of `task`, runs `planners` (config indices) on it in the order given and
+// hands each run to `on_run` as soon as it is done. Returns the map's slot. Throws what the
+// generator throws (a map that cannot be made fails the sweep, not a run).
+MapSlot run_map_task(const MapTaskContext& context, std::int64_t task,
+                     std::span<const std::size_t> planners, MapTaskWorkspace& workspace,
+                     const std::function<void(const MapTaskRun&)>& on_run);
+
+}  // namespace agv

@@ -2,19 +2,19 @@
 
 #include <deque>
 
-#include "algos/search/astar.h"
-#include "algos/search/dijkstra.h"
-#include "algos/swarm/aco.h"
+#include "algos/local/fusion.h"
+#include "algos/sampling/birrt.h"
+#include "algos/sampling/prm.h"
+#include "algos/sampling/rrt.h"
 #include "algos/search/alt_astar.h"
+#include "algos/search/astar.h"
 #include "algos/search/bidir_astar.h"
+#include "algos/search/dijkstra.h"
 #include "algos/search/improved_astar.h"
 #include "algos/search/kin_astar.h"
 #include "algos/search/ma_star.h"
+#include "algos/swarm/aco.h"
 #include "algos/swarm/hma_star.h"
-#include "algos/sampling/birrt.h"
-#include "algos/local/fusion.h"
-#include "algos/sampling/prm.h"
-#include "algos/sampling/rrt.h"
 
 namespace agv {
 
@@ -32,8 +32,11 @@ const char* to_string(PlannerKind kind) {
   return "?";
 }
 
-const std::vector<PlannerInfo>& planner_registry() {
-  static const std::vector<PlannerInfo> registry = {
+namespace {
+
+// The planners that stand on no other registered planner, in `list` order.
+std::vector<PlannerInfo> standalone_planners() {
+  return {
       astar_planner(),
       dijkstra_planner(),
       prm_planner(),
@@ -47,12 +50,33 @@ const std::vector<PlannerInfo>& planner_registry() {
       improved_astar_planner(),
       alt_astar_planner(),
       kin_astar_planner(),
-      dwa_planner(),
-      fusion_astar_dwa_planner(),
-      fusion_alt_dwa_planner(),
-      fusion_kin_dwa_planner(),
   };
+}
+
+// The local planners, last: a fusion planner's `global_planner` chooses among the grid planners
+// registered before it (planner_registry() cannot be asked while it is being built).
+std::vector<PlannerInfo> build_registry() {
+  std::vector<PlannerInfo> registry = standalone_planners();
+  const std::vector<std::string> grid = planner_names(registry, PlannerKind::grid_search);
+  registry.push_back(dwa_planner());
+  registry.push_back(fusion_astar_dwa_planner(grid));
+  registry.push_back(fusion_alt_dwa_planner(grid));
+  registry.push_back(fusion_kin_dwa_planner(grid));
   return registry;
+}
+
+}  // namespace
+
+const std::vector<PlannerInfo>& planner_registry() {
+  static const std::vector<PlannerInfo> registry = build_registry();
+  return registry;
+}
+
+std::vector<std::string> planner_names(std::span<const PlannerInfo> planners, PlannerKind kind) {
+  std::vector<std::string> names;
+  for (const auto& info : planners)
+    if (info.kind == kind) names.push_back(info.name);
+  return names;
 }
 
 namespace {

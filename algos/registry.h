@@ -3,6 +3,7 @@
 // planner by its stable public name and sets any of its declared parameters.
 
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,8 @@ struct PlannerInfo {
 };
 
 const std::vector<PlannerInfo>& planner_registry();
+// The names of the planners of one kind, in the order of `planners`.
+std::vector<std::string> planner_names(std::span<const PlannerInfo> planners, PlannerKind kind);
 // For test binaries only, before any sweep starts: makes a planner findable by name without
 // putting it in the real registry (the isolation tests' deliberately faulty planners).
 void add_planner_for_testing(PlannerInfo info);

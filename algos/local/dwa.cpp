@@ -20,8 +20,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Squared exact distance from (x, y) to the nearest obstacle square of the 3x3 block around its
 // cell, capped at 1: no square outside that block is closer than 1 to any point of the cell.
 // Branch-free over the padded occupancy (the border ring makes the 8 neighbours always valid).
-inline double capped_static_sq(const std::uint8_t* occ, int stride, int width, int height,
-                               double x, double y) {
+inline double capped_static_sq(const std::uint8_t* occ, int stride, int width, int height, double x,
+                               double y) {
   if (!(x >= 0.0 && y >= 0.0 && x <= width && y <= height)) return 0.0;  // also catches NaN
   const int cx = std::min(static_cast<int>(x), width);  // x == width lies on the border ring
   const int cy = std::min(static_cast<int>(y), height);
@@ -73,8 +73,8 @@ DwaWeights default_weights(DwaScore s) {
 }
 
 double capped_static_clearance(const Grid& grid, Point p) {
-  return std::sqrt(capped_static_sq(grid.occupancy(), grid.stride(), grid.width(), grid.height(),
-                                    p.x, p.y));
+  return std::sqrt(
+      capped_static_sq(grid.occupancy(), grid.stride(), grid.width(), grid.height(), p.x, p.y));
 }
 
 Point aim_point(Point a, Point b, Point p, double lookahead) {
@@ -107,37 +107,66 @@ VelocityWindow dynamic_window(const DwaParams& p, double v, double w) {
   return win;
 }
 
-DwaDecision dwa_step(const DwaParams& p, const Pose& pose, double v, double w,
-                     const DwaTarget& target, const DwaView& view, DwaScratch& s) {
-  const std::span<const Point> goals = target.goals;
-  const GoalPassing& passing = target.passing;
-  const int nv = std::max(1, p.v_samples), nw = std::max(1, p.w_samples);
-  const int n = nv * nw;
-  const int steps = std::max(1, static_cast<int>(std::lround(p.predict_time / p.dt)));
-  const double to_cells = 1.0 / p.cell_edge;
+namespace {
+
+// The sample grid and rollout length of one control step.
+struct StepShape {
+  int nv = 1, nw = 1, n = 1;
+  int steps = 1;  // K = round(predict_time / dt)
+};
+
+StepShape step_shape(const DwaParams& p) {
+  StepShape shape;
+  shape.nv = std::max(1, p.v_samples);
+  shape.nw = std::max(1, p.w_samples);
+  shape.n = shape.nv * shape.nw;
+  shape.steps = std::max(1, static_cast<int>(std::lround(p.predict_time / p.dt)));
+  return shape;
+}
+
+// dist(v, w) of eq. 10: the arc length (m) to the last rollout point before a hit at step k,
+// less the v dt the robot drives before the next control step can brake. Without that reserve
+// the braking chain loses up to one rollout step per control step and a robot at speed runs out
+// of admissible pairs before the obstacle.
+inline double stop_arc(double v, double k, int steps, double dt) {
+  return k <= steps ? std::max(0.0, v * (k - 2.0) * dt) : kInf;
+}
+
+// Step 1: V_m n V_d, its upper linear velocity capped by the target's speed cap.
+VelocityWindow capped_window(const DwaParams& p, double v, double w, const DwaTarget& target) {
   VelocityWindow win = dynamic_window(p, v, w);
   if (target.speed_cap < win.v_hi) win.v_hi = std::max(win.v_lo, target.speed_cap);
+  return win;
+}
 
-  DwaDecision out;
-  out.samples = n;
-  out.rollout_steps = steps;
-
-  for (auto* a : {&s.v, &s.w, &s.px, &s.py, &s.ux, &s.uy, &s.chord, &s.rot_c, &s.rot_s,
-                  &s.step_static, &s.step_other, &s.min_static, &s.min_other, &s.hit_static,
-                  &s.hit_other,
-                  &s.goal_index,
-                  &s.heading, &s.velocity, &s.dist, &s.dist_dyna, &s.score, &s.smoothed})
-    a->resize(n);
-  s.admissible.resize(n);
-
+// Step 2: the n_v x n_w pairs on a regular grid over the window (scratch sized for them).
+void sample_pairs(const VelocityWindow& win, const StepShape& shape, DwaScratch& s) {
+  for (auto* a :
+       {&s.v,         &s.w,          &s.px,        &s.py,          &s.ux,         &s.uy,
+        &s.chord,     &s.rot_c,      &s.rot_s,     &s.step_static, &s.step_other, &s.min_static,
+        &s.min_other, &s.hit_static, &s.hit_other, &s.goal_index,  &s.heading,    &s.velocity,
+        &s.dist,      &s.dist_dyna,  &s.score,     &s.smoothed})
+    a->resize(shape.n);
+  s.admissible.resize(shape.n);
+  const int nv = shape.nv, nw = shape.nw;
   for (int iv = 0; iv < nv; ++iv)
     for (int iw = 0; iw < nw; ++iw) {
       s.v[iv * nw + iw] = sample_at(win.v_lo, win.v_hi, iv, nv);
       s.w[iv * nw + iw] = sample_at(win.w_lo, win.w_hi, iw, nw);
     }
+}
 
-  // Rollout set-up: each step is the exact arc of algos/local/unicycle.h, its chord direction rotating
-  // by w dt per step.
+// Step 3: every pair rolled out at once: per rollout, the first hit step (static, other), the
+// minimum clearances and how many local goals it has passed.
+void roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, const DwaTarget& target,
+              const DwaView& view, DwaScratch& s) {
+  const std::span<const Point> goals = target.goals;
+  const GoalPassing& passing = target.passing;
+  const int n = shape.n, steps = shape.steps;
+  const double to_cells = 1.0 / p.cell_edge;
+
+  // Rollout set-up: each step is the exact arc of algos/local/unicycle.h, its chord direction
+  // rotating by w dt per step.
   for (int i = 0; i < n; ++i) {
     const double half = 0.5 * p.dt * s.w[i];
     s.chord[i] = s.v[i] * to_cells * p.dt * sinc(half);
@@ -222,9 +251,36 @@ DwaDecision dwa_step(const DwaParams& p, const Pose& pose, double v, double w,
               .select(static_cast<double>(j + 1), s.goal_index);
     }
   }
+}
 
-  // Score terms. Heading (Fox): pi - |angle between the end heading and the goal direction seen
-  // from the end point| (paper 003 Head / Heading, paper 004 PHead).
+// Step 4: V_a (eq. 10), dist(v, w) = arc length to the last rollout point before the first hit.
+struct Admissibility {
+  bool any = false;
+  bool moving = false;  // some admissible pair has v > 0
+};
+
+Admissibility admissible_pairs(const DwaParams& p, const StepShape& shape, DwaScratch& s) {
+  Admissibility out;
+  for (int i = 0; i < shape.n; ++i) {
+    const double stop =
+        stop_arc(s.v[i], std::min(s.hit_static[i], s.hit_other[i]), shape.steps, p.dt);  // m
+    bool ok = s.v[i] <= std::sqrt(2.0 * stop * p.acc_v) + 1e-12;
+    if (p.va_omega) ok = ok && std::abs(s.w[i]) <= std::sqrt(2.0 * stop * p.acc_w) + 1e-12;
+    s.admissible[i] = ok;
+    out.any = out.any || ok;
+    out.moving = out.moving || (ok && s.v[i] > 1e-9);
+  }
+  return out;
+}
+
+// Step 5, the terms: heading, velocity and the clearance terms of every rollout.
+void score_terms(const DwaParams& p, const Pose& pose, const StepShape& shape,
+                 const DwaTarget& target, DwaScratch& s) {
+  const std::span<const Point> goals = target.goals;
+  const auto goal_count = static_cast<int>(goals.size());
+  const int n = shape.n, steps = shape.steps;
+  // Heading (Fox): pi - |angle between the end heading and the goal direction seen from the end
+  // point| (paper 003 Head / Heading, paper 004 PHead).
   const double horizon = steps * p.dt;
   for (int i = 0; i < n; ++i) {
     const auto gi = static_cast<int>(s.goal_index[i]);
@@ -241,45 +297,21 @@ DwaDecision dwa_step(const DwaParams& p, const Pose& pose, double v, double w,
     s.heading[i] = kPi - std::abs(wrap_angle(to_goal - end_theta));
   }
   s.velocity = s.v;
-  // dist(v, w) of eq. 10: the arc length (m) to the last rollout point before a hit at step k,
-  // less the v dt the robot drives before the next control step can brake. Without that
-  // reserve the braking chain loses up to one rollout step per control step and a robot at
-  // speed runs out of admissible pairs before the obstacle.
-  auto arc = [&](int i, double k) {
-    return k <= steps ? std::max(0.0, s.v[i] * (k - 2.0) * p.dt) : kInf;
-  };
   if (p.dist_mode == DwaParams::DistMode::collision) {
     for (int i = 0; i < n; ++i) {
-      s.dist[i] = std::min(p.dist_cap, arc(i, s.hit_static[i]));
-      s.dist_dyna[i] = std::min(p.dist_cap, arc(i, s.hit_other[i]));
+      s.dist[i] = std::min(p.dist_cap, stop_arc(s.v[i], s.hit_static[i], steps, p.dt));
+      s.dist_dyna[i] = std::min(p.dist_cap, stop_arc(s.v[i], s.hit_other[i], steps, p.dt));
     }
   } else {
     s.dist = (s.min_static.min(p.static_clearance_cap) - p.robot_radius).max(0.0);
     s.dist_dyna = (s.min_other - p.robot_radius).max(0.0);
   }
   if (p.score != DwaScore::improved_003) s.dist = s.dist.min(s.dist_dyna);
+}
 
-  // V_a (eq. 10): dist(v, w) = arc length to the last rollout point before the first hit.
-  bool any = false, moving = false;
-  for (int i = 0; i < n; ++i) {
-    const double stop = arc(i, std::min(s.hit_static[i], s.hit_other[i]));  // metres
-    bool ok = s.v[i] <= std::sqrt(2.0 * stop * p.acc_v) + 1e-12;
-    if (p.va_omega) ok = ok && std::abs(s.w[i]) <= std::sqrt(2.0 * stop * p.acc_w) + 1e-12;
-    s.admissible[i] = ok;
-    any = any || ok;
-    moving = moving || (ok && s.v[i] > 1e-9);
-  }
-  out.any_admissible = any;
-  out.any_moving = moving;
-  if (!any) {
-    // No admissible pair: brake as hard as the window allows, keeping the curvature of the
-    // current motion (the arc the last admissible pair was checked along).
-    out.v = win.v_lo;
-    out.w = std::clamp(v > 1e-9 ? w * win.v_lo / v : 0.0, win.w_lo, win.w_hi);
-    return out;
-  }
-
-  // Normalise each term by its sum over the admissible set, weight, add.
+// Step 5, the objective: each term normalised by its sum over the admissible set, weighted and
+// added; then the sigma smoothing when asked for.
+void score_pairs(const DwaParams& p, const StepShape& shape, DwaScratch& s) {
   auto scale = [&](const Eigen::ArrayXd& term, double weight) {
     const double sum = s.admissible.select(term, 0.0).sum();
     return sum > 0.0 ? weight / sum : 0.0;
@@ -289,35 +321,65 @@ DwaDecision dwa_step(const DwaParams& p, const Pose& pose, double v, double w,
   const double ch = scale(s.heading, wt.heading), cv = scale(s.velocity, wt.velocity),
                cd = scale(s.dist, wt.clearance), cy = scale(s.dist_dyna, dyn_weight);
   s.score = ch * s.heading + cv * s.velocity + cd * s.dist + cy * s.dist_dyna;
+  if (!p.smoothing) return;
+  // Sigma: a [1 2 1] x [1 2 1] kernel over the (v, w) sample grid, admissible neighbours only,
+  // so a pair whose neighbours are also good wins (Fox et al.: more side clearance).
+  const int nv = shape.nv, nw = shape.nw;
+  for (int iv = 0; iv < nv; ++iv)
+    for (int iw = 0; iw < nw; ++iw) {
+      double sum = 0.0, weight = 0.0;
+      for (int dv = -1; dv <= 1; ++dv)
+        for (int dw = -1; dw <= 1; ++dw) {
+          const int jv = iv + dv, jw = iw + dw;
+          if (jv < 0 || jv >= nv || jw < 0 || jw >= nw) continue;
+          const int j = jv * nw + jw;
+          if (!s.admissible[j]) continue;
+          const double k = (dv == 0 ? 2.0 : 1.0) * (dw == 0 ? 2.0 : 1.0);
+          sum += k * s.score[j];
+          weight += k;
+        }
+      s.smoothed[iv * nw + iw] = weight > 0.0 ? sum / weight : 0.0;
+    }
+  s.score = s.smoothed;
+}
 
-  if (p.smoothing) {
-    // Sigma: a [1 2 1] x [1 2 1] kernel over the (v, w) sample grid, admissible neighbours only,
-    // so a pair whose neighbours are also good wins (Fox et al.: more side clearance).
-    for (int iv = 0; iv < nv; ++iv)
-      for (int iw = 0; iw < nw; ++iw) {
-        double sum = 0.0, weight = 0.0;
-        for (int dv = -1; dv <= 1; ++dv)
-          for (int dw = -1; dw <= 1; ++dw) {
-            const int jv = iv + dv, jw = iw + dw;
-            if (jv < 0 || jv >= nv || jw < 0 || jw >= nw) continue;
-            const int j = jv * nw + jw;
-            if (!s.admissible[j]) continue;
-            const double k = (dv == 0 ? 2.0 : 1.0) * (dw == 0 ? 2.0 : 1.0);
-            sum += k * s.score[j];
-            weight += k;
-          }
-        s.smoothed[iv * nw + iw] = weight > 0.0 ? sum / weight : 0.0;
-      }
-    s.score = s.smoothed;
-  }
-
-  // Best admissible pair; ties go to the first in sample order (deterministic).
+// The best admissible pair; ties go to the first in sample order (deterministic).
+int best_pair(const StepShape& shape, const DwaScratch& s) {
   int best = -1;
-  for (int i = 0; i < n; ++i)
+  for (int i = 0; i < shape.n; ++i)
     if (s.admissible[i] && (best < 0 || s.score[i] > s.score[best])) best = i;
+  return best;
+}
+
+}  // namespace
+
+DwaDecision dwa_step(const DwaParams& p, const Pose& pose, double v, double w,
+                     const DwaTarget& target, const DwaView& view, DwaScratch& s) {
+  const StepShape shape = step_shape(p);
+  DwaDecision out;
+  out.samples = shape.n;
+  out.rollout_steps = shape.steps;
+
+  const VelocityWindow win = capped_window(p, v, w, target);
+  sample_pairs(win, shape, s);
+  roll_out(p, pose, shape, target, view, s);
+  const Admissibility admissible = admissible_pairs(p, shape, s);
+  out.any_admissible = admissible.any;
+  out.any_moving = admissible.moving;
+  if (!admissible.any) {
+    // No admissible pair: brake as hard as the window allows, keeping the curvature of the
+    // current motion (the arc the last admissible pair was checked along).
+    out.v = win.v_lo;
+    out.w = std::clamp(v > 1e-9 ? w * win.v_lo / v : 0.0, win.w_lo, win.w_hi);
+    return out;
+  }
+  score_terms(p, pose, shape, target, s);
+  score_pairs(p, shape, s);
+  const int best = best_pair(shape, s);
   out.v = s.v[best];
   out.w = s.w[best];
-  out.stop_distance = arc(best, std::min(s.hit_static[best], s.hit_other[best]));
+  out.stop_distance =
+      stop_arc(s.v[best], std::min(s.hit_static[best], s.hit_other[best]), shape.steps, p.dt);
   return out;
 }
 

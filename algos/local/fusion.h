@@ -8,28 +8,45 @@
 // the known grid (its corner rule forced to no_corner_cut by default: a disc robot cannot pass
 // between diagonal obstacles); its key points (Ramer-Douglas-Peucker with key_point_tolerance,
 // on cell-centre paths exactly the turning points after collinear removal) are the DWA's
-// successive local goals; (3) the robot drives through them (algos/local/fusion_drive.h, which lists
-// our additions to the papers' loop). The planner reports the executed trajectory, the moving
+// successive local goals; (3) the robot drives through them (algos/local/fusion_drive.h, which
+// lists our additions to the papers' loop). The planner reports the executed trajectory, the moving
 // obstacles' tracks and the unknown cells (PlanResult::trajectory) and the engine judges it
 // (engine/trajectory_judge.h). `path` is the executed positions, so the path metrics apply.
 //
 // Pure DWA (`dwa`): the same world and loop with start and goal as the only key points,
 // Fox's heading toward the goal, no turn speed limit.
 
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "algos/local/fusion_drive.h"
 #include "algos/registry.h"
+#include "core/corner_rule.h"
 
 namespace agv {
 
 // Registered as dwa, fusion_astar_dwa, fusion_alt_dwa, fusion_kin_dwa (algos/registry.cpp).
-PlannerInfo dwa_planner();               // pure DWA toward the goal
-PlannerInfo fusion_astar_dwa_planner();  // classic A* + classic DWA (the papers' baseline)
-PlannerInfo fusion_alt_dwa_planner();    // alternative A* + improved DWA (paper 003)
-PlannerInfo fusion_kin_dwa_planner();    // kinematic A* + following DWA (paper 004)
+// `grid_planners`: the names a fusion's `global_planner` may choose, in registry order: the
+// registered planners of kind grid_search, which the registry hands over as it builds itself.
+PlannerInfo dwa_planner();  // pure DWA toward the goal
+// classic A* + classic DWA (the papers' baseline)
+PlannerInfo fusion_astar_dwa_planner(const std::vector<std::string>& grid_planners);
+// alternative A* + improved DWA (paper 003)
+PlannerInfo fusion_alt_dwa_planner(const std::vector<std::string>& grid_planners);
+// kinematic A* + following DWA (paper 004)
+PlannerInfo fusion_kin_dwa_planner(const std::vector<std::string>& grid_planners);
 
-// The control-loop options a fusion planner's parameters resolve to (tests drive hand-made
-// worlds with them, algos/local/fusion_drive.h). `params` resolved against one of the registrations
-// above; has_global false for `dwa`.
-FusionOptions fusion_options(const Params& params, bool has_global);
+// The parameters a fusion run gives its global planner `global`: `corner_rule` = `rule` when
+// given and declared; `shortcut_margin` = max(its default, `margin`) when declared and margin >= 0
+// (global_margin is a floor, so a planner with a wider clearance of its own keeps it).
+nlohmann::json global_planner_params(const PlannerInfo& global, std::optional<CornerRule> rule,
+                                     double margin);
+
+// The control-loop options the registered planner `planner` (dwa or a fusion_*_dwa) runs with
+// under the parameters `given` (tests drive hand-made worlds with them,
+// algos/local/fusion_drive.h). Throws InputError naming `planner` for a bad value.
+FusionOptions fusion_options(const std::string& planner, const nlohmann::json& given);
 
 }  // namespace agv

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "algos/local/unicycle.h"
 #include "core/cell_geometry.h"
@@ -52,9 +56,9 @@ double turn_speed_cap(const FusionOptions& o, const std::vector<Point>& keys, st
                       const Pose& pose, Point aim, double edge) {
   const double reach = o.turn_distance * edge;
   const Point pos = position(pose);
-  double cap = turn_speed(
-      std::abs(wrap_angle(std::atan2(aim.y - pos.y, aim.x - pos.x) - pose.theta)), 0.0, reach,
-      o.dwa);
+  double cap =
+      turn_speed(std::abs(wrap_angle(std::atan2(aim.y - pos.y, aim.x - pos.x) - pose.theta)), 0.0,
+                 reach, o.dwa);
   double distance = point_distance(pos, keys[key]);
   for (std::size_t k = key; k + 1 < keys.size() && k < key + 3; ++k) {
     const double a = std::atan2(keys[k].y - keys[k - 1].y, keys[k].x - keys[k - 1].x);
@@ -101,159 +105,227 @@ std::vector<Point> fusion_key_points(std::span<const Point> path, double toleran
   return out;
 }
 
-DriveResult drive(const FusionOptions& o, const PlanRequest& req, DwaWorld& world,
-                  std::vector<Point> keys, const Planner* global) {
-  const Grid& grid = req.grid;
-  DriveScratch& fs = req.scratch.get<DriveScratch>();
-  const double edge = grid.cell_edge();
-  const Point start = centre(req.start), goal = centre(req.goal);
-  if (keys.size() < 2) keys = {start, goal};
-  DwaParams dp = o.dwa;
-  dp.cell_edge = edge;
-  const auto max_steps = static_cast<long long>(std::ceil(o.sim_time_limit / dp.dt - 1e-9));
-  const double keep_out = dp.robot_radius + dp.safety_margin;
-  const GoalPassing passing{o.waypoint_tolerance, o.pass_radius};
-  const double horizon_cells = dp.v_max * dp.predict_time / edge + o.waypoint_tolerance;
+namespace {
 
-  DriveResult out;
-  auto tr = std::make_shared<Trajectory>();
-  tr->robot_radius = dp.robot_radius;
-  tr->goal_tolerance = o.goal_tolerance;
-  tr->cell_edge = edge;
-  tr->unknown_cells.assign(world.unknown_cells().begin(), world.unknown_cells().end());
-  tr->key_points = keys;
-  for (const MovingDisc& m : world.moving()) tr->obstacles.push_back({m.radius, {}});
-  // The robot starts at rest, facing its first local goal.
-  Pose pose{start.x, start.y, std::atan2(keys[1].y - start.y, keys[1].x - start.x)};
-  double v = 0.0, w = 0.0;
-  auto record = [&] {
-    tr->t.push_back(static_cast<double>(out.steps) * dp.dt);
-    tr->position.push_back(position(pose));
-    tr->heading.push_back(pose.theta);
-    for (std::size_t j = 0; j < world.moving().size(); ++j)
-      tr->obstacles[j].centre.push_back(world.moving()[j].centre);
-  };
-  record();
+// One run of the control loop: the robot's state and what it has sensed, one method per step
+// of a control period.
+class Drive {
+ public:
+  Drive(const FusionOptions& o, const PlanRequest& req, DwaWorld& world, std::vector<Point> keys,
+        const Planner* global)
+      : o_(o),
+        req_(req),
+        grid_(req.grid),
+        world_(world),
+        global_(global),
+        fs_(req.scratch.get<DriveScratch>()),
+        edge_(grid_.cell_edge()),
+        start_(centre(req.start)),
+        goal_(centre(req.goal)),
+        keys_(std::move(keys)),
+        dp_(o.dwa),
+        tr_(std::make_shared<Trajectory>()) {
+    if (keys_.size() < 2) keys_ = {start_, goal_};
+    dp_.cell_edge = edge_;
+    max_steps_ = static_cast<long long>(std::ceil(o_.sim_time_limit / dp_.dt - 1e-9));
+    keep_out_ = dp_.robot_radius + dp_.safety_margin;
+    passing_ = GoalPassing{o_.waypoint_tolerance, o_.pass_radius};
+    horizon_cells_ = dp_.v_max * dp_.predict_time / edge_ + o_.waypoint_tolerance;
 
-  fs.seen.assign(world.unknown_cells().size(), 0);
-  fs.seen_cells.clear();
-  fs.last_seen.assign(world.moving().size(), Point{});
-  fs.was_seen.assign(world.moving().size(), 0);
-  std::size_t key = 1;
-  int stuck = 0;
-  std::string end;
-  while (true) {
-    const Point pos = position(pose);
-    if (point_distance(pos, goal) <= o.goal_tolerance) {
-      end = "reached";
-      break;
-    }
-    // Sense: unknown cells within range are seen (and remembered); moving discs within range.
-    bool replan = false;
-    for (std::size_t j = 0; j < fs.seen.size(); ++j) {
-      const Cell c = world.unknown_cells()[j];
-      if (fs.seen[j] || point_distance(pos, centre(c)) > o.sensor_range) continue;
-      fs.seen[j] = 1;
-      fs.seen_cells.push_back(c);
-      replan = replan || (global != nullptr && o.replan && path_near_cell(pos, keys, key, c, keep_out));
-    }
-    if (replan) {
-      // Replan on the grid as now known, from the robot's cell.
-      fs.replan_grid = grid;
-      for (const Cell& c : fs.seen_cells) fs.replan_grid.set_blocked(c, true);
-      const Cell here{static_cast<int>(pos.x), static_cast<int>(pos.y)};
-      if (fs.replan_grid.in_bounds(here) && !fs.replan_grid.blocked(here)) {
-        const PlanRequest sub{fs.replan_grid, here, req.goal, req.rng, req.scratch, req.deadline};
-        const PlanResult g = global->plan(sub);
-        out.expanded_nodes += g.expanded_nodes;
-        if (g.ok()) {
-          keys = fusion_key_points(g.path, o.key_point_tolerance);
-          if (keys.size() < 2) keys.push_back(goal);
-          key = 1;
-          ++out.replans;
-        }
+    tr_->robot_radius = dp_.robot_radius;
+    tr_->goal_tolerance = o_.goal_tolerance;
+    tr_->cell_edge = edge_;
+    tr_->unknown_cells.assign(world_.unknown_cells().begin(), world_.unknown_cells().end());
+    tr_->key_points = keys_;
+    for (const MovingDisc& m : world_.moving()) tr_->obstacles.push_back({m.radius, {}});
+    // The robot starts at rest, facing its first local goal.
+    pose_ = Pose{start_.x, start_.y, std::atan2(keys_[1].y - start_.y, keys_[1].x - start_.x)};
+    record();
+
+    fs_.seen.assign(world_.unknown_cells().size(), 0);
+    fs_.seen_cells.clear();
+    fs_.last_seen.assign(world_.moving().size(), Point{});
+    fs_.was_seen.assign(world_.moving().size(), 0);
+  }
+
+  DriveResult run() {
+    std::string end;
+    while (true) {
+      const Point pos = position(pose_);
+      if (point_distance(pos, goal_) <= o_.goal_tolerance) {
+        end = "reached";
+        break;
+      }
+      if (sense_unknown(pos)) replan(pos);
+      advance_local_goal(pos);
+      sense_moving(pos);
+      const DwaView view{grid_, fs_.seen_cells, fs_.visible};
+      const DwaDecision d = dwa_step(dp_, pose_, v_, w_, local_target(pos), view, fs_.dwa);
+      move(d);
+      if (const char* reason = end_of_run(d, pos)) {
+        end = reason;
+        break;
       }
     }
-    // Advance the local goal past key points passed or made unreachable by an unknown cell.
-    while (key + 1 < keys.size()) {
-      const Point k = keys[key];
-      double clear = kInf;
-      for (const Cell& c : fs.seen_cells) clear = std::min(clear, point_cell_distance(k, c));
-      if (clear >= keep_out && !passes_goal(pos, keys[key - 1], k, passing)) break;
-      ++key;
-    }
-    fs.visible.clear();
-    for (std::size_t j = 0; j < world.moving().size(); ++j) {
-      const MovingDisc& m = world.moving()[j];
-      const bool seen = point_distance(pos, m.centre) - m.radius <= o.sensor_range;
-      Point velocity;  // observed: the displacement since the previous control step
-      if (seen && o.predict_moving && fs.was_seen[j])
-        velocity = {(m.centre.x - fs.last_seen[j].x) / dp.dt,
-                    (m.centre.y - fs.last_seen[j].y) / dp.dt};
-      if (seen) fs.visible.push_back({m.centre, m.radius, velocity});
-      fs.was_seen[j] = seen;
-      fs.last_seen[j] = m.centre;
-    }
+    tr_->end_reason = end;
+    out_.trajectory = std::move(tr_);
+    return std::move(out_);
+  }
 
-    // The local goal and the key points after it (rollouts that pass one aim at the next), or
-    // the final goal alone.
+ private:
+  void record() {
+    tr_->t.push_back(static_cast<double>(out_.steps) * dp_.dt);
+    tr_->position.push_back(position(pose_));
+    tr_->heading.push_back(pose_.theta);
+    for (std::size_t j = 0; j < world_.moving().size(); ++j)
+      tr_->obstacles[j].centre.push_back(world_.moving()[j].centre);
+  }
+
+  // Sense: unknown cells within range are seen (and remembered). True when one newly seen lies
+  // on the remaining global path and the run replans.
+  bool sense_unknown(Point pos) {
+    bool replan = false;
+    for (std::size_t j = 0; j < fs_.seen.size(); ++j) {
+      const Cell c = world_.unknown_cells()[j];
+      if (fs_.seen[j] || point_distance(pos, centre(c)) > o_.sensor_range) continue;
+      fs_.seen[j] = 1;
+      fs_.seen_cells.push_back(c);
+      replan = replan ||
+               (global_ != nullptr && o_.replan && path_near_cell(pos, keys_, key_, c, keep_out_));
+    }
+    return replan;
+  }
+
+  // Replan on the grid as now known, from the robot's cell.
+  void replan(Point pos) {
+    fs_.replan_grid = grid_;
+    for (const Cell& c : fs_.seen_cells) fs_.replan_grid.set_blocked(c, true);
+    const Cell here{static_cast<int>(pos.x), static_cast<int>(pos.y)};
+    if (!fs_.replan_grid.in_bounds(here) || fs_.replan_grid.blocked(here)) return;
+    const PlanRequest sub{fs_.replan_grid, here, req_.goal, req_.rng, req_.scratch, req_.deadline};
+    const PlanResult g = global_->plan(sub);
+    out_.expanded_nodes += g.expanded_nodes;
+    if (!g.ok()) return;
+    keys_ = fusion_key_points(g.path, o_.key_point_tolerance);
+    if (keys_.size() < 2) keys_.push_back(goal_);
+    key_ = 1;
+    ++out_.replans;
+  }
+
+  // Advance the local goal past key points passed or made unreachable by an unknown cell.
+  void advance_local_goal(Point pos) {
+    while (key_ + 1 < keys_.size()) {
+      const Point k = keys_[key_];
+      double clear = kInf;
+      for (const Cell& c : fs_.seen_cells) clear = std::min(clear, point_cell_distance(k, c));
+      if (clear >= keep_out_ && !passes_goal(pos, keys_[key_ - 1], k, passing_)) break;
+      ++key_;
+    }
+  }
+
+  // Sense: the moving discs within range, with their observed velocity when predicted.
+  void sense_moving(Point pos) {
+    fs_.visible.clear();
+    for (std::size_t j = 0; j < world_.moving().size(); ++j) {
+      const MovingDisc& m = world_.moving()[j];
+      const bool seen = point_distance(pos, m.centre) - m.radius <= o_.sensor_range;
+      Point velocity;  // observed: the displacement since the previous control step
+      if (seen && o_.predict_moving && fs_.was_seen[j])
+        velocity = {(m.centre.x - fs_.last_seen[j].x) / dp_.dt,
+                    (m.centre.y - fs_.last_seen[j].y) / dp_.dt};
+      if (seen) fs_.visible.push_back({m.centre, m.radius, velocity});
+      fs_.was_seen[j] = seen;
+      fs_.last_seen[j] = m.centre;
+    }
+  }
+
+  // The local goal and the key points after it (rollouts that pass one aim at the next), or the
+  // final goal alone.
+  DwaTarget local_target(Point pos) const {
     DwaTarget target;
     // Only key points a rollout can reach within the horizon (at most v_max T along the path).
     std::size_t reach = 1;
-    for (double along = point_distance(pos, keys[key]); key + reach < keys.size() && reach < kLookaheadGoals;
-         ++reach) {
-      if (along > horizon_cells) break;
-      along += point_distance(keys[key + reach - 1], keys[key + reach]);
+    for (double along = point_distance(pos, keys_[key_]);
+         key_ + reach < keys_.size() && reach < kLookaheadGoals; ++reach) {
+      if (along > horizon_cells_) break;
+      along += point_distance(keys_[key_ + reach - 1], keys_[key_ + reach]);
     }
-    target.goals = std::span<const Point>(keys.data() + key, reach);
-    target.passing = passing;
-    target.from = keys[key - 1];
-    target.aim_segment = o.aim_segment;
-    target.lookahead = o.lookahead;
-    if (o.heading_final) {
-      target.goals = std::span<const Point>(&goal, 1);
+    target.goals = std::span<const Point>(keys_.data() + key_, reach);
+    target.passing = passing_;
+    target.from = keys_[key_ - 1];
+    target.aim_segment = o_.aim_segment;
+    target.lookahead = o_.lookahead;
+    if (o_.heading_final) {
+      target.goals = std::span<const Point>(&goal_, 1);
       target.from = pos;
       target.aim_segment = false;
-    } else if (o.turn_speed_limit) {
-      target.speed_cap = turn_speed_cap(
-          o, keys, key, pose, aim_point(keys[key - 1], keys[key], pos, o.lookahead), edge);
+    } else if (o_.turn_speed_limit) {
+      target.speed_cap =
+          turn_speed_cap(o_, keys_, key_, pose_,
+                         aim_point(keys_[key_ - 1], keys_[key_], pos, o_.lookahead), edge_);
     }
-    const DwaView view{grid, fs.seen_cells, fs.visible};
-    const DwaDecision d = dwa_step(dp, pose, v, w, target, view, fs.dwa);
-    v = d.v;
-    w = d.w;
-    pose = unicycle_step(pose, v / edge, w, dp.dt);
-    const Point robot = position(pose);
-    world.advance(dp.dt, o.moving_yield ? &robot : nullptr, dp.robot_radius);
-    ++out.steps;
-    tr->v.push_back(v);
-    tr->w.push_back(w);
+    return target;
+  }
+
+  // Executes the command for one control period; the world moves with the robot.
+  void move(const DwaDecision& d) {
+    v_ = d.v;
+    w_ = d.w;
+    pose_ = unicycle_step(pose_, v_ / edge_, w_, dp_.dt);
+    const Point robot = position(pose_);
+    world_.advance(dp_.dt, o_.moving_yield ? &robot : nullptr, dp_.robot_radius);
+    ++out_.steps;
+    tr_->v.push_back(v_);
+    tr_->w.push_back(w_);
     record();
-    if (world.contact(position(pose), dp.robot_radius) != DwaWorld::Contact::none) {
-      end = "contact";
-      break;
-    }
+  }
+
+  // Why the run ends after this step (`pos`: where the step started), or nullptr.
+  const char* end_of_run(const DwaDecision& d, Point pos) {
+    const Point now = position(pose_);
+    if (world_.contact(now, dp_.robot_radius) != DwaWorld::Contact::none) return "contact";
     // Stuck: no admissible velocity that moves the robot, or one the DWA does not take (the
     // classic local minimum: every forward rollout ends at an obstacle, standing scores best).
-    const bool moved = d.any_moving && point_distance(position(pose), pos) >= kStandStill;
-    stuck = moved ? 0 : stuck + 1;
-    if (stuck >= o.stuck_steps) {
-      end = "stuck";
-      break;
+    const bool moved = d.any_moving && point_distance(now, pos) >= kStandStill;
+    stuck_ = moved ? 0 : stuck_ + 1;
+    if (stuck_ >= o_.stuck_steps) return "stuck";
+    if (out_.steps >= max_steps_ && point_distance(now, goal_) > o_.goal_tolerance)
+      return "timeout";
+    if (out_.steps % kDeadlineCheckSteps == 0 && req_.deadline.expired()) {
+      out_.deadline_hit = true;
+      return "timeout";
     }
-    if (out.steps >= max_steps && point_distance(position(pose), goal) > o.goal_tolerance) {
-      end = "timeout";
-      break;
-    }
-    if (out.steps % kDeadlineCheckSteps == 0 && req.deadline.expired()) {
-      out.deadline_hit = true;
-      end = "timeout";
-      break;
-    }
+    return nullptr;
   }
-  tr->end_reason = end;
-  out.trajectory = std::move(tr);
-  return out;
+
+  const FusionOptions& o_;
+  const PlanRequest& req_;
+  const Grid& grid_;
+  DwaWorld& world_;
+  const Planner* global_;
+  DriveScratch& fs_;
+  const double edge_;
+  const Point start_, goal_;
+  std::vector<Point> keys_;
+  DwaParams dp_;
+  long long max_steps_ = 0;
+  double keep_out_ = 0.0;
+  GoalPassing passing_;
+  double horizon_cells_ = 0.0;
+
+  DriveResult out_;
+  std::shared_ptr<Trajectory> tr_;
+  Pose pose_;
+  double v_ = 0.0, w_ = 0.0;
+  std::size_t key_ = 1;  // the current local goal
+  int stuck_ = 0;
+};
+
+}  // namespace
+
+DriveResult drive(const FusionOptions& o, const PlanRequest& req, DwaWorld& world,
+                  std::vector<Point> keys, const Planner* global) {
+  return Drive(o, req, world, std::move(keys), global).run();
 }
 
 }  // namespace agv

@@ -17,7 +17,7 @@ struct BirrtScratch {
 
 class BirrtPlanner final : public Planner {
  public:
-  explicit BirrtPlanner(const Params& params) : settings_(rrt_settings_of(params)) {}
+  explicit BirrtPlanner(const RrtSettings& settings) : settings_(settings) {}
 
   PlanResult plan(const PlanRequest& request) const override {
     const Grid& grid = request.grid;
@@ -104,9 +104,10 @@ PlannerInfo birrt_planner() {
       "PLANNERS.md Baselines; paper 000 Tables III-XIII (Bi-RRT column); Kuffner & LaValle 2000";
   info.expanded_nodes_meaning = "nodes of both trees at the end of the plan (both roots included)";
   info.stochastic = true;
-  info.params = rrt_params();
+  static const ParamDecls<RrtSettings> decls = rrt_decls();
+  info.params = decls.specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
-    return std::make_unique<BirrtPlanner>(params);
+    return std::make_unique<BirrtPlanner>(decls.read(params));
   };
   return info;
 }

@@ -52,13 +52,34 @@ struct PrmScratch {
   std::vector<std::pair<double, int>> heap;
 };
 
+struct PrmOptions {
+  long long samples = 0;
+  std::size_t k = 0;
+  double radius = 0.0;  // cells; 0 = unlimited
+  SightRule sight = SightRule::cells();
+};
+
+const ParamDecls<PrmOptions>& prm_decls() {
+  static const ParamDecls<PrmOptions> decls = [] {
+    ParamDecls<PrmOptions> d;
+    d.integer("samples", &PrmOptions::samples, 500, 0, 10000000,
+              "free-space samples (paper 000 gives no value); rejection sampling stops after 64 "
+              "draws per sample, so a nearly full map may get fewer")
+        .integer("k", &PrmOptions::k, 10, 1, 10000,
+                 "nearest neighbours each node tries to connect to")
+        .number("radius", &PrmOptions::radius, 0.0, 0.0, 1e6,
+                "connection radius in cells: neighbours farther away are not tried; 0 = "
+                "unlimited")
+        .include(&PrmOptions::sight, segment_sight_decls(CornerRule::no_corner_cut));
+    return d;
+  }();
+  return decls;
+}
+
 class PrmPlanner final : public Planner {
  public:
-  explicit PrmPlanner(const Params& params)
-      : samples_(params.integer("samples")),
-        k_(static_cast<std::size_t>(params.integer("k"))),
-        radius_(params.number("radius")),
-        sight_(segment_sight_of(params)) {}
+  explicit PrmPlanner(const PrmOptions& options)
+      : samples_(options.samples), k_(options.k), radius_(options.radius), sight_(options.sight) {}
 
   PlanResult plan(const PlanRequest& request) const override {
     PlanResult result;
@@ -217,18 +238,9 @@ PlannerInfo prm_planner() {
   info.expanded_nodes_meaning =
       "roadmap nodes: samples drawn in free space plus the start and goal centres";
   info.stochastic = true;
-  info.params = {
-      ParamSpec::integer("samples", 500, 0, 10000000,
-                         "free-space samples (paper 000 gives no value); rejection sampling "
-                         "stops after 64 draws per sample, so a nearly full map may get fewer"),
-      ParamSpec::integer("k", 10, 1, 10000, "nearest neighbours each node tries to connect to"),
-      ParamSpec::number("radius", 0.0, 0.0, 1e6,
-                        "connection radius in cells: neighbours farther away are not tried; "
-                        "0 = unlimited"),
-      segment_corner_rule_param(CornerRule::no_corner_cut),
-  };
+  info.params = prm_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
-    return std::make_unique<PrmPlanner>(params);
+    return std::make_unique<PrmPlanner>(prm_decls().read(params));
   };
   return info;
 }

@@ -14,10 +14,27 @@ struct RrtScratch {
   RrtTree tree;
 };
 
+struct RrtOptions {
+  RrtSettings settings;
+  double goal_radius = 0.0;  // cells; 0 = the step size
+};
+
+const ParamDecls<RrtOptions>& rrt_options_decls() {
+  static const ParamDecls<RrtOptions> decls = [] {
+    ParamDecls<RrtOptions> d;
+    d.include(&RrtOptions::settings, rrt_decls())
+        .number("goal_radius", &RrtOptions::goal_radius, 0.0, 0.0, 1e6,
+                "a new node within this distance (cells) of the goal is joined to it directly "
+                "when that segment is free; 0 = the step size");
+    return d;
+  }();
+  return decls;
+}
+
 class RrtPlanner final : public Planner {
  public:
-  explicit RrtPlanner(const Params& params)
-      : settings_(rrt_settings_of(params)), goal_radius_(params.number("goal_radius")) {}
+  explicit RrtPlanner(const RrtOptions& options)
+      : settings_(options.settings), goal_radius_(options.goal_radius) {}
 
   PlanResult plan(const PlanRequest& request) const override {
     const Grid& grid = request.grid;
@@ -94,13 +111,9 @@ PlannerInfo rrt_planner() {
   info.source = "PLANNERS.md Baselines; paper 000 Tables III-XIII (RRT column); LaValle 1998";
   info.expanded_nodes_meaning = "tree nodes at the end of the plan (root and goal included)";
   info.stochastic = true;
-  info.params = rrt_params();
-  info.params.push_back(ParamSpec::number(
-      "goal_radius", 0.0, 0.0, 1e6,
-      "a new node within this distance (cells) of the goal is joined to it directly when that "
-      "segment is free; 0 = the step size"));
+  info.params = rrt_options_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
-    return std::make_unique<RrtPlanner>(params);
+    return std::make_unique<RrtPlanner>(rrt_options_decls().read(params));
   };
   return info;
 }

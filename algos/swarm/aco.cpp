@@ -251,18 +251,40 @@ class Colony {
   long long iterations_done_ = 0;
 };
 
+const ParamDecls<AcoSettings>& aco_decls() {
+  static const ParamDecls<AcoSettings> decls = [] {
+    // The grid planners' corner_rule (name, choices, doc), declared in
+    // algos/search/grid_search_params.h.
+    const ParamSpec rule = corner_rule_param(CornerRule::allow);
+    ChoiceTable<CornerRule> rules;
+    for (const auto& name : rule.choices) rules.emplace_back(name, *corner_rule_from_string(name));
+    ParamDecls<AcoSettings> d;
+    d.integer("ants", &AcoSettings::ants, 20, 1, 1000000,
+              "ants per iteration (paper 002 Table 2: 20)")
+        .integer("iterations", &AcoSettings::iterations, 150, 1, 10000000,
+                 "iterations; the best path over all of them is returned (paper 002 Table 2: "
+                 "150)")
+        .number("evaporation", &AcoSettings::evaporation, 0.5, 0.0, 0.999,
+                "pheromone evaporation rate rho per iteration (paper 002 Table 2: 0.5)")
+        .number("alpha", &AcoSettings::alpha, 1.1, 0.0, 10.0,
+                "pheromone factor: exponent of tau (paper 002 Table 2: 1.1)")
+        .number("beta", &AcoSettings::beta, 4.0, 0.0, 20.0,
+                "heuristic factor: exponent of eta = 1 / distance to the goal (paper 002 Table "
+                "2: 4)")
+        .number("q", &AcoSettings::q, 1.0, 1e-9, 1e9,
+                "deposit constant Q: an ant that reached the goal adds Q / L (L: its path length "
+                "in cells) to each cell of its path (paper 002 gives no value)")
+        .number("initial_pheromone", &AcoSettings::initial_pheromone, 1.0, 1e-9, 1e9,
+                "pheromone tau0 of every cell at the start (paper 002 gives no value)")
+        .choice(rule.name, &AcoSettings::rule, CornerRule::allow, std::move(rules), rule.doc);
+    return d;
+  }();
+  return decls;
+}
+
 class AcoPlanner final : public Planner {
  public:
-  explicit AcoPlanner(const Params& params) {
-    settings_.ants = params.integer("ants");
-    settings_.iterations = params.integer("iterations");
-    settings_.evaporation = params.number("evaporation");
-    settings_.alpha = params.number("alpha");
-    settings_.beta = params.number("beta");
-    settings_.q = params.number("q");
-    settings_.initial_pheromone = params.number("initial_pheromone");
-    settings_.rule = corner_rule_of(params);
-  }
+  explicit AcoPlanner(const AcoSettings& settings) : settings_(settings) {}
 
   PlanResult plan(const PlanRequest& request) const override {
     PlanResult result;
@@ -308,27 +330,9 @@ PlannerInfo aco_planner() {
   info.source = "PLANNERS.md Baselines; paper 002 section 5, Table 2; Dorigo et al. 1996";
   info.expanded_nodes_meaning = "ant steps: moves made by all ants of all iterations";
   info.stochastic = true;
-  info.params = {
-      ParamSpec::integer("ants", 20, 1, 1000000, "ants per iteration (paper 002 Table 2: 20)"),
-      ParamSpec::integer("iterations", 150, 1, 10000000,
-                         "iterations; the best path over all of them is returned (paper 002 "
-                         "Table 2: 150)"),
-      ParamSpec::number("evaporation", 0.5, 0.0, 0.999,
-                        "pheromone evaporation rate rho per iteration (paper 002 Table 2: 0.5)"),
-      ParamSpec::number("alpha", 1.1, 0.0, 10.0,
-                        "pheromone factor: exponent of tau (paper 002 Table 2: 1.1)"),
-      ParamSpec::number("beta", 4.0, 0.0, 20.0,
-                        "heuristic factor: exponent of eta = 1 / distance to the goal (paper 002 "
-                        "Table 2: 4)"),
-      ParamSpec::number("q", 1.0, 1e-9, 1e9,
-                        "deposit constant Q: an ant that reached the goal adds Q / L (L: its path "
-                        "length in cells) to each cell of its path (paper 002 gives no value)"),
-      ParamSpec::number("initial_pheromone", 1.0, 1e-9, 1e9,
-                        "pheromone tau0 of every cell at the start (paper 002 gives no value)"),
-      corner_rule_param(CornerRule::allow),
-  };
+  info.params = aco_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
-    return std::make_unique<AcoPlanner>(params);
+    return std::make_unique<AcoPlanner>(aco_decls().read(params));
   };
   return info;
 }

@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "algos/search/dijkstra.h"
 #include "algos/registry.h"
 #include "algos/sampling/rrt_tree.h"
-#include "engine/validator.h"
+#include "algos/search/dijkstra.h"
 #include "core/corner_rule.h"
+#include "engine/validator.h"
 #include "generators/map_generators.h"
 
 namespace agv {
@@ -199,6 +199,24 @@ TEST(BaselineEdges, ParametersDeclared) {
   EXPECT_THROW(make("aco", {{"evaporation", 1.0}}), InputError);
   for (const char* name : {"prm", "rrt", "birrt", "aco"})
     EXPECT_TRUE(find_planner(name)->stochastic) << name;
+}
+
+TEST(BaselineEdges, DeclaredCornerRuleReachesThePlanner) {
+  // The rule a planner reports (and is validated under) is the one its parameter names.
+  MapInstance map;
+  map.grid = Grid(12, 12);
+  map.start = {1, 1};
+  map.goal = {10, 9};
+  Scratch scratch;
+  for (const char* name : {"prm", "rrt", "birrt", "aco"})
+    for (const char* rule : {"allow", "no_squeeze", "no_corner_cut"}) {
+      const PlanResult r = run(make(name, {{"corner_rule", rule}}), map, 1, scratch);
+      EXPECT_EQ(to_string(r.rule), rule) << name;
+    }
+  // The sampling planners' other fields: a step of 50 cells crosses this empty map at once.
+  const PlanResult rrt = run(make("rrt", {{"step", 50.0}, {"goal_bias", 1.0}}), map, 1, scratch);
+  ASSERT_TRUE(rrt.ok());
+  EXPECT_EQ(rrt.path.size(), 2U);
 }
 
 // --- PRM: towards the any-angle optimum, from above ------------------------------------------

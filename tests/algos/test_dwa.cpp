@@ -21,18 +21,20 @@
 #include <limits>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "algos/local/dwa.h"
 #include "algos/local/dwa_world.h"
 #include "algos/local/fusion.h"
-#include "algos/registry.h"
 #include "algos/local/unicycle.h"
-#include "engine/run_executor.h"
-#include "engine/trajectory_judge.h"
+#include "algos/registry.h"
 #include "core/cell_geometry.h"
 #include "core/distance_transform.h"
+#include "core/input_error.h"
+#include "engine/run_executor.h"
+#include "engine/trajectory_judge.h"
 #include "generators/map_generators.h"
 
 namespace agv {
@@ -103,8 +105,7 @@ TEST(DynamicWindow, NeverLeavesLimitsOrReach) {
       DwaTarget target;
       target.goals = std::span<const Point>(&st.goal, 1);
       target.from = position(st.pose);
-      const DwaDecision d =
-          dwa_step(p, st.pose, st.v, st.w, target, DwaView{map.grid, {}, {}}, s);
+      const DwaDecision d = dwa_step(p, st.pose, st.v, st.w, target, DwaView{map.grid, {}, {}}, s);
       const double eps = 1e-12;
       for (int i = 0; i < d.samples; ++i) {
         // V_m (eq. 8, v_min = 0) and V_d (eq. 9).
@@ -140,8 +141,7 @@ TEST(DynamicWindow, ChosenVelocityCanStopBeforeItsFirstObstacle) {
       DwaTarget target;
       target.goals = std::span<const Point>(&st.goal, 1);
       target.from = position(st.pose);
-      const DwaDecision d =
-          dwa_step(p, st.pose, st.v, st.w, target, DwaView{map.grid, {}, {}}, s);
+      const DwaDecision d = dwa_step(p, st.pose, st.v, st.w, target, DwaView{map.grid, {}, {}}, s);
       if (!d.any_admissible) continue;
       ++admissible;
       Pose q = st.pose;
@@ -220,8 +220,7 @@ TEST(Fusion, AllThreeVariantsRunWithMovingAndUnknownObstacles) {
 TEST(Fusion, HeadOnMovingObstacleIsAvoidedByImprovedDwa) {
   const Grid grid(20, 20);
   const Cell start{2, 10}, goal{17, 10};
-  const Params params = Params::resolve(fusion_alt_dwa_planner().params, {}, "test");
-  const FusionOptions options = fusion_options(params, true);
+  const FusionOptions options = fusion_options("fusion_alt_dwa", nlohmann::json::object());
   int avoided = 0;
   for (const double offset : {0.0, 0.1, -0.2}) {
     // A disc of radius 0.4 on the robot's line, coming straight at it at 0.5 m/s.
@@ -264,7 +263,8 @@ TEST(Fusion, JudgedStaticClearanceIsTheExactMinimumOverTheTrajectory) {
     for (std::size_t i = 0; i + 1 < tr.position.size(); ++i) {
       const Point a = tr.position[i], b = tr.position[i + 1];
       exact = std::min(exact, dt.segment_clearance(a, b));
-      for (const Cell& u : tr.unknown_cells) exact = std::min(exact, segment_cell_distance(a, b, u));
+      for (const Cell& u : tr.unknown_cells)
+        exact = std::min(exact, segment_cell_distance(a, b, u));
     }
     EXPECT_DOUBLE_EQ(judged, exact * tr.cell_edge) << "map " << m;
     ++checked;
@@ -314,16 +314,102 @@ TEST(Fusion, WorldIsTheSameForEveryPlannerOnAMap) {
   }
 }
 
-TEST(Fusion, UnregisteredGlobalPlannerIsAnInputError) {
-  // A name in the choice list that this build does not register is refused when configured;
-  // one outside the list is refused by the parameter check.
-  EXPECT_THROW(configure_planner("fusion_astar_dwa", {{"global_planner", "no_such"}}, "t"),
-               InputError);
-  for (const auto& name : {"astar", "alt_astar", "kin_astar"}) {
-    if (find_planner(name) != nullptr) {
-      EXPECT_NO_THROW(configure_planner("fusion_astar_dwa", {{"global_planner", name}}, "t"));
+TEST(Fusion, GlobalPlannerChoicesAreTheRegisteredGridPlanners) {
+  // The registry's grid_search planners, in registry order; any other name (a sampling planner,
+  // an unknown one) is refused by the parameter check, naming the field.
+  std::vector<std::string> grid;
+  for (const auto& info : planner_registry())
+    if (info.kind == PlannerKind::grid_search) grid.push_back(info.name);
+  ASSERT_FALSE(grid.empty());
+  for (const char* fusion : {"fusion_astar_dwa", "fusion_alt_dwa", "fusion_kin_dwa"}) {
+    const PlannerInfo* info = find_planner(fusion);
+    ASSERT_NE(info, nullptr) << fusion;
+    const auto spec = std::find_if(info->params.begin(), info->params.end(),
+                                   [](const ParamSpec& p) { return p.name == "global_planner"; });
+    ASSERT_NE(spec, info->params.end()) << fusion;
+    EXPECT_EQ(spec->choices, grid) << fusion;
+    for (const auto& name : grid)
+      EXPECT_NO_THROW(configure_planner(fusion, {{"global_planner", name}}, "t")) << name;
+  }
+  for (const char* name : {"no_such", "rrt", "dwa"}) {
+    try {
+      configure_planner("fusion_astar_dwa", {{"global_planner", name}}, "planners[1]");
+      ADD_FAILURE() << name << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("planners[1].params.global_planner"), std::string::npos)
+          << e.what();
     }
   }
+  const PlannerInfo* dwa = find_planner("dwa");
+  ASSERT_NE(dwa, nullptr);
+  for (const auto& spec : dwa->params) EXPECT_NE(spec.name, "global_planner");
+}
+
+TEST(Fusion, GlobalMarginIsAFloorForTheGlobalPlannersShortcutMargin) {
+  // astar declares shortcut_margin (default 0) and corner_rule.
+  const PlannerInfo* astar = find_planner("astar");
+  ASSERT_NE(astar, nullptr);
+  const nlohmann::json raised = global_planner_params(*astar, CornerRule::no_corner_cut, 0.6);
+  EXPECT_DOUBLE_EQ(raised.at("shortcut_margin").get<double>(), 0.6);
+  EXPECT_EQ(raised.at("corner_rule"), "no_corner_cut");
+  // -1 and planner_default leave the planner's own values.
+  EXPECT_EQ(global_planner_params(*astar, std::nullopt, -1.0), nlohmann::json::object());
+  // A planner with a wider clearance of its own keeps it; one that declares neither gets neither.
+  PlannerInfo wide;
+  wide.params = {ParamSpec::number("shortcut_margin", 1.0, 0.0, 10.0, "clearance")};
+  EXPECT_DOUBLE_EQ(global_planner_params(wide, CornerRule::allow, 0.6).at("shortcut_margin"), 1.0);
+  EXPECT_FALSE(global_planner_params(wide, CornerRule::allow, 0.6).contains("corner_rule"));
+  PlannerInfo bare;
+  bare.params = {ParamSpec::number("margin", 0.0, 0.0, 10.0, "another meaning")};
+  EXPECT_EQ(global_planner_params(bare, CornerRule::allow, 0.6), nlohmann::json::object());
+}
+
+TEST(Fusion, OptionsFollowTheDeclaredParameters) {
+  // Defaults per variant: the score's weights, sigma smoothing for following_004 only.
+  const FusionOptions kin = fusion_options("fusion_kin_dwa", nlohmann::json::object());
+  EXPECT_EQ(kin.dwa.score, DwaScore::following_004);
+  EXPECT_TRUE(kin.dwa.smoothing);
+  EXPECT_DOUBLE_EQ(kin.dwa.weights.clearance, default_weights(DwaScore::following_004).clearance);
+  const FusionOptions alt = fusion_options("fusion_alt_dwa", nlohmann::json::object());
+  EXPECT_EQ(alt.dwa.score, DwaScore::improved_003);
+  EXPECT_FALSE(alt.dwa.smoothing);
+  EXPECT_DOUBLE_EQ(alt.dwa.weights.dynamic, 0.35);
+  EXPECT_TRUE(alt.aim_segment);
+  EXPECT_TRUE(alt.turn_speed_limit);
+  // Given values reach their fields; a weight of -1 keeps the score's default.
+  const FusionOptions given = fusion_options("fusion_astar_dwa", {{"w_velocity", 0.5},
+                                                                  {"w_heading", -1.0},
+                                                                  {"smoothing", "on"},
+                                                                  {"heading_aim", "key_point"},
+                                                                  {"heading_target", "final_goal"},
+                                                                  {"dist_mode", "clearance"},
+                                                                  {"dynamic_yield", true},
+                                                                  {"stuck_steps", 7},
+                                                                  {"v_samples", 3},
+                                                                  {"lookahead", 2.5}});
+  EXPECT_DOUBLE_EQ(given.dwa.weights.velocity, 0.5);
+  EXPECT_DOUBLE_EQ(given.dwa.weights.heading, default_weights(DwaScore::classic).heading);
+  EXPECT_TRUE(given.dwa.smoothing);
+  EXPECT_FALSE(given.aim_segment);
+  EXPECT_TRUE(given.heading_final);
+  EXPECT_EQ(given.dwa.dist_mode, DwaParams::DistMode::clearance);
+  EXPECT_TRUE(given.moving_yield);
+  EXPECT_EQ(given.stuck_steps, 7);
+  EXPECT_EQ(given.dwa.v_samples, 3);
+  EXPECT_DOUBLE_EQ(given.lookahead, 2.5);
+  // Pure DWA: heading at the goal itself, no turn speed limit, the goal tolerance for passing.
+  const FusionOptions dwa = fusion_options("dwa", {{"goal_tolerance", 0.7}});
+  EXPECT_FALSE(dwa.aim_segment);
+  EXPECT_FALSE(dwa.turn_speed_limit);
+  EXPECT_DOUBLE_EQ(dwa.waypoint_tolerance, 0.7);
+  // A fusion-only parameter is unknown to pure DWA; errors name the field.
+  try {
+    fusion_options("dwa", {{"lookahead", 1.0}});
+    ADD_FAILURE() << "dwa accepted lookahead";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dwa.lookahead"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(fusion_options("fusion_alt_dwa", {{"robot_radius", 0.6}}), InputError);
 }
 
 // A kinematically consistent straight run: v m/s along +x from `start`'s centre, n steps.

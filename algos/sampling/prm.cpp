@@ -217,6 +217,7 @@ PlannerInfo prm_planner() {
   info.expanded_nodes_meaning =
       "roadmap nodes: samples drawn in free space plus the start and goal centres";
   info.stochastic = true;
+  info.proves_no_path = false;  // gives up with limit after its budget
   info.params = {
       ParamSpec::integer("samples", 500, 0, 10000000,
                          "free-space samples (paper 000 gives no value); rejection sampling "

@@ -282,10 +282,13 @@ class AcoPlanner final : public Planner {
     result.expanded_nodes = colony.steps();
     result.extra.emplace_back("successful_ants", static_cast<double>(colony.successful()));
     result.extra.emplace_back("iterations", static_cast<double>(colony.iterations_done()));
-    if (!colony.found()) {
+    // A deadline that stops the colony is a limit even with a path in hand: the path of an
+    // unfinished run depends on when the clock ran out (the planner contract).
+    if (!colony.found() || !completed) {
       result.failure = Failure::limit;
-      result.message = completed ? "no ant reached the goal in any iteration"
-                                 : "deadline passed before any ant reached the goal";
+      result.message = completed        ? "no ant reached the goal in any iteration"
+                       : colony.found() ? "deadline passed before the last iteration"
+                                        : "deadline passed before any ant reached the goal";
       return result;
     }
     result.failure = Failure::none;
@@ -308,6 +311,7 @@ PlannerInfo aco_planner() {
   info.source = "PLANNERS.md Baselines; paper 002 section 5, Table 2; Dorigo et al. 1996";
   info.expanded_nodes_meaning = "ant steps: moves made by all ants of all iterations";
   info.stochastic = true;
+  info.proves_no_path = false;  // gives up with limit after its budget
   info.params = {
       ParamSpec::integer("ants", 20, 1, 1000000, "ants per iteration (paper 002 Table 2: 20)"),
       ParamSpec::integer("iterations", 150, 1, 10000000,

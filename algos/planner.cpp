@@ -1,6 +1,8 @@
 #include "algos/planner.h"
 
+#include <atomic>
 #include <ctime>
+#include <string>
 
 namespace agv {
 
@@ -18,6 +20,41 @@ const char* to_string(Failure f) {
       return "invalid_input";
   }
   return "unknown";
+}
+
+struct Deadline::PollCounter {
+  explicit PollCounter(std::int64_t allowed) : allowed(allowed) {}
+  const std::int64_t allowed;
+  // Atomic: copies may be polled from the threads of one planner's parallel phases.
+  std::atomic<std::int64_t> polls{0};
+};
+
+Deadline Deadline::after_polls(std::int64_t polls) {
+  Deadline d = never();
+  d.counter_ = std::make_shared<PollCounter>(polls);
+  return d;
+}
+
+bool Deadline::count_poll() const {
+  return counter_->polls.fetch_add(1, std::memory_order_relaxed) >= counter_->allowed;
+}
+
+std::int64_t Deadline::polls() const {
+  return counter_ != nullptr ? counter_->polls.load(std::memory_order_relaxed) : 0;
+}
+
+PlanResult plan_checked(const Planner& planner, const PlanRequest& request) {
+  const Grid& grid = request.grid;
+  for (const auto& [cell, what] :
+       {std::pair{request.start, "start"}, std::pair{request.goal, "goal"}}) {
+    const std::string at =
+        std::string(what) + " (" + std::to_string(cell.x) + "," + std::to_string(cell.y) + ")";
+    if (!grid.in_bounds(cell))
+      return PlanResult::failed(Failure::invalid_input, at + " is outside the grid");
+    if (grid.blocked(cell))
+      return PlanResult::failed(Failure::invalid_input, at + " is an obstacle cell");
+  }
+  return planner.plan(request);
 }
 
 std::int64_t thread_cpu_ns() {

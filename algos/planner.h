@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "core/corner_rule.h"
-#include "core/rng.h"
 #include "core/grid.h"
+#include "core/rng.h"
 
 namespace agv {
 
@@ -20,19 +20,34 @@ enum class Failure { none, no_path, limit, invalid_path, invalid_input };
 const char* to_string(Failure f);
 
 // Cooperative time limit: planners poll expired() every few hundred expansions or iterations
-// (STYLE.md item 7) and give up with Failure::limit.
+// (STYLE.md item 7) and give up with Failure::limit. A planner may copy the request's deadline
+// into a sub-request (a fusion planner's global planner): copies share one limit.
 class Deadline {
  public:
   using Clock = std::chrono::steady_clock;
   static Deadline never() { return Deadline(Clock::time_point::max()); }
-  static Deadline after(std::chrono::nanoseconds budget) {
-    return Deadline(Clock::now() + budget);
-  }
+  static Deadline after(std::chrono::nanoseconds budget) { return Deadline(Clock::now() + budget); }
+  // For tests: answers "not expired" to the first `polls` calls of expired(), counted over this
+  // deadline and all its copies, and "expired" to every later one, so a test can stop a planner
+  // mid-plan at a reproducible point and count how many polls it makes after that.
+  static Deadline after_polls(std::int64_t polls);
   explicit Deadline(Clock::time_point at) : at_(at) {}
-  bool expired() const { return at_ != Clock::time_point::max() && Clock::now() >= at_; }
+
+  bool expired() const {
+    // A clock deadline pays one well-predicted null test for the poll-counted kind.
+    if (counter_ != nullptr) [[unlikely]]
+      return count_poll();
+    return at_ != Clock::time_point::max() && Clock::now() >= at_;
+  }
+  // after_polls() deadlines: the calls of expired() so far, over all copies; 0 for a clock one.
+  std::int64_t polls() const;
 
  private:
+  struct PollCounter;
+  bool count_poll() const;
+
   Clock::time_point at_;
+  std::shared_ptr<PollCounter> counter_;  // set only by after_polls()
 };
 
 // CPU time of one named phase of a plan call (search, post-processing, smoothing, ...).
@@ -42,26 +57,26 @@ struct PhaseTime {
 };
 
 // What a planner that drives a simulated robot through a world with moving obstacles executed
-// (the DWA fusion planners, algos/local/fusion.h), for the engine to judge: collisions, reaching the
-// goal and the fusion metrics are decided from this record by engine/trajectory_judge.h, never
+// (the DWA fusion planners, algos/local/fusion.h), for the engine to judge: collisions, reaching
+// the goal and the fusion metrics are decided from this record by engine/trajectory_judge.h, never
 // taken from the planner. Positions in continuous cell coordinates, times in seconds.
 struct DynamicTrack {
   double radius = 0.0;        // cells
   std::vector<Point> centre;  // at each Trajectory::t
 };
 struct Trajectory {
-  std::vector<double> t;         // t[0] = 0, one entry per control step boundary
-  std::vector<Point> position;   // robot centre at t[i]
-  std::vector<double> heading;   // rad, at t[i]
-  std::vector<double> v, w;      // command held over [t[i], t[i+1]): m/s, rad/s (size - 1)
-  double robot_radius = 0.0;     // cells
-  double goal_tolerance = 0.0;   // cells: reached when the centre is this close to the goal's
-  double cell_edge = 1.0;        // metres per cell
+  std::vector<double> t;        // t[0] = 0, one entry per control step boundary
+  std::vector<Point> position;  // robot centre at t[i]
+  std::vector<double> heading;  // rad, at t[i]
+  std::vector<double> v, w;     // command held over [t[i], t[i+1]): m/s, rad/s (size - 1)
+  double robot_radius = 0.0;    // cells
+  double goal_tolerance = 0.0;  // cells: reached when the centre is this close to the goal's
+  double cell_edge = 1.0;       // metres per cell
   std::vector<DynamicTrack> obstacles;
   std::vector<Cell> unknown_cells;  // static obstacles the global planner did not see
   std::vector<Point> global_path;   // the global plan the run started from (for pictures)
   std::vector<Point> key_points;    // its key points, the DWA's successive local goals
-  std::string end_reason;  // the planner's account: reached, timeout, stuck or contact
+  std::string end_reason;           // the planner's account: reached, timeout, stuck or contact
 };
 
 struct PlanResult {
@@ -151,8 +166,13 @@ class Planner {
  public:
   virtual ~Planner() = default;
   // Thread-safe: a planner object holds only its configuration; per-call state lives in
-  // request.scratch. Start and goal are in bounds and free (the engine checks before calling).
+  // request.scratch. Start and goal are in bounds and free: callers go through plan_checked().
   virtual PlanResult plan(const PlanRequest& request) const = 0;
 };
+
+// The one entry point for callers (engine runs, `agvbench plan` and `scen`, tests): refuses a
+// start or goal outside the grid or on an obstacle with Failure::invalid_input, naming which,
+// and otherwise returns planner.plan(request).
+PlanResult plan_checked(const Planner& planner, const PlanRequest& request);
 
 }  // namespace agv

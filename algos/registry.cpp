@@ -124,6 +124,7 @@ nlohmann::json registry_json() {
                    {"source", info.source},
                    {"expanded_nodes", info.expanded_nodes_meaning},
                    {"stochastic", info.stochastic},
+                   {"proves_no_path", info.proves_no_path},
                    {"params", p}});
   }
   return out;

@@ -27,6 +27,12 @@ struct PlannerInfo {
   std::string source;   // where it comes from, e.g. "paper 000 section 4.1"
   std::string expanded_nodes_meaning;  // what expanded_nodes counts for this planner
   bool stochastic = false;             // draws from the run's RNG
+  // Whether the planner proves that there is no path: where the goal cannot be reached it
+  // answers no_path (and the engine checks every no_path claim: missed_path). A planner that
+  // searches within a budget of samples, iterations or simulated time cannot tell "none" from
+  // "not found yet", sets false and gives up with limit (the planner contract, checked by
+  // tests/algos/test_contract.cpp).
+  bool proves_no_path = true;
   std::vector<ParamSpec> params;
   // Builds a planner from a validated parameter set.
   std::unique_ptr<Planner> (*make)(const Params& params) = nullptr;

@@ -22,8 +22,10 @@ int command_scen(const ScenCommand& cmd) {
   nlohmann::json params = cli_params_for(*info, cmd.params);
   // MovingAI optima assume no corner cutting.
   for (const auto& s : info->params)
-    if (s.name == "corner_rule" && !params.contains("corner_rule")) params["corner_rule"] = "no_corner_cut";
-  const ConfiguredPlanner planner = configure_planner(cmd.planner, params, "--planner " + cmd.planner);
+    if (s.name == "corner_rule" && !params.contains("corner_rule"))
+      params["corner_rule"] = "no_corner_cut";
+  const ConfiguredPlanner planner =
+      configure_planner(cmd.planner, params, "--planner " + cmd.planner);
 
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const auto& q = queries[i];
@@ -51,7 +53,7 @@ int command_scen(const ScenCommand& cmd) {
     const auto& q = queries[i];
     const PlanRequest req{grid, q.start, q.goal, rng, scratch, Deadline::never()};
     const std::int64_t t0 = thread_cpu_ns();
-    const PlanResult r = planner.planner->plan(req);
+    const PlanResult r = plan_checked(*planner.planner, req);
     times_ns.push_back(static_cast<double>(thread_cpu_ns() - t0));
     expansions += r.expanded_nodes;
     if (!r.ok()) {
@@ -76,30 +78,34 @@ int command_scen(const ScenCommand& cmd) {
   std::vector<double> sorted = times_ns;
   std::sort(sorted.begin(), sorted.end());
   const double median_ns = sorted.empty() ? 0.0
-                           : sorted.size() % 2 ? sorted[sorted.size() / 2]
-                                               : 0.5 * (sorted[sorted.size() / 2 - 1] + sorted[sorted.size() / 2]);
-  const nlohmann::json doc = {{"map", cmd.map_file},
-                              {"scen", cmd.scen_file},
-                              {"planner", cmd.planner},
-                              {"params", planner.params.values()},
-                              {"queries", queries.size()},
-                              {"failures", failures},
-                              {"mismatches", mismatches},
-                              {"max_abs_error", max_abs},
-                              {"max_rel_error", max_rel},
-                              {"tolerance", cmd.tolerance},
-                              {"expanded_nodes", expansions},
-                              {"first_mismatches", bad},
-                              {"timing", {{"total_s", total_ns / 1e9}, {"median_query_us", median_ns / 1e3}}}};
+                           : sorted.size() % 2
+                               ? sorted[sorted.size() / 2]
+                               : 0.5 * (sorted[sorted.size() / 2 - 1] + sorted[sorted.size() / 2]);
+  const nlohmann::json doc = {
+      {"map", cmd.map_file},
+      {"scen", cmd.scen_file},
+      {"planner", cmd.planner},
+      {"params", planner.params.values()},
+      {"queries", queries.size()},
+      {"failures", failures},
+      {"mismatches", mismatches},
+      {"max_abs_error", max_abs},
+      {"max_rel_error", max_rel},
+      {"tolerance", cmd.tolerance},
+      {"expanded_nodes", expansions},
+      {"first_mismatches", bad},
+      {"timing", {{"total_s", total_ns / 1e9}, {"median_query_us", median_ns / 1e3}}}};
   if (cmd.json) {
     std::cout << doc.dump(1) << "\n";
   } else {
-    std::printf("%s on %s: %zu queries, %lld mismatches (%lld failed), max abs error %.3g, "
-                "max rel error %.3g, %lld nodes expanded\n",
-                cmd.planner.c_str(), cmd.scen_file.c_str(), queries.size(),
-                static_cast<long long>(mismatches), static_cast<long long>(failures), max_abs,
-                max_rel, static_cast<long long>(expansions));
-    std::printf("timing: total %.3f s, median %.1f us per query\n", total_ns / 1e9, median_ns / 1e3);
+    std::printf(
+        "%s on %s: %zu queries, %lld mismatches (%lld failed), max abs error %.3g, "
+        "max rel error %.3g, %lld nodes expanded\n",
+        cmd.planner.c_str(), cmd.scen_file.c_str(), queries.size(),
+        static_cast<long long>(mismatches), static_cast<long long>(failures), max_abs, max_rel,
+        static_cast<long long>(expansions));
+    std::printf("timing: total %.3f s, median %.1f us per query\n", total_ns / 1e9,
+                median_ns / 1e3);
     for (const auto& b : bad) std::printf("  mismatch: %s\n", b.dump().c_str());
   }
   return mismatches == 0 ? 0 : 1;

@@ -13,10 +13,20 @@
 namespace agv {
 
 namespace {
-constexpr std::array<std::string_view, kOutcomeCount> kOutcomeNames = {
-    "success", "no_path", "missed_path", "limit", "invalid_path", "invalid_input", "crash",
-    "timeout", "oom", "collision_static", "collision_unknown", "collision_dynamic",
-    "sim_timeout", "stuck"};
+constexpr std::array<std::string_view, kOutcomeCount> kOutcomeNames = {"success",
+                                                                       "no_path",
+                                                                       "missed_path",
+                                                                       "limit",
+                                                                       "invalid_path",
+                                                                       "invalid_input",
+                                                                       "crash",
+                                                                       "timeout",
+                                                                       "oom",
+                                                                       "collision_static",
+                                                                       "collision_unknown",
+                                                                       "collision_dynamic",
+                                                                       "sim_timeout",
+                                                                       "stuck"};
 }
 
 std::string_view to_string(Outcome outcome) { return kOutcomeNames[static_cast<int>(outcome)]; }
@@ -43,7 +53,7 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
   const PlanRequest request{map.grid(), map.start(), map.goal(), rng, scratch, deadline};
   const std::int64_t t0 = thread_cpu_ns();
   try {
-    out.result = planner.plan(request);
+    out.result = plan_checked(planner, request);
   } catch (const std::bad_alloc&) {
     out.plan_time_ns = thread_cpu_ns() - t0;
     out.outcome = Outcome::oom;

@@ -104,6 +104,7 @@ PlannerInfo birrt_planner() {
       "PLANNERS.md Baselines; paper 000 Tables III-XIII (Bi-RRT column); Kuffner & LaValle 2000";
   info.expanded_nodes_meaning = "nodes of both trees at the end of the plan (both roots included)";
   info.stochastic = true;
+  info.proves_no_path = false;  // gives up with limit after its budget
   static const ParamDecls<RrtSettings> decls = rrt_decls();
   info.params = decls.specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {

@@ -238,6 +238,7 @@ PlannerInfo prm_planner() {
   info.expanded_nodes_meaning =
       "roadmap nodes: samples drawn in free space plus the start and goal centres";
   info.stochastic = true;
+  info.proves_no_path = false;  // gives up with limit after its budget
   info.params = prm_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return std::make_unique<PrmPlanner>(prm_decls().read(params));

@@ -111,6 +111,7 @@ PlannerInfo rrt_planner() {
   info.source = "PLANNERS.md Baselines; paper 000 Tables III-XIII (RRT column); LaValle 1998";
   info.expanded_nodes_meaning = "tree nodes at the end of the plan (root and goal included)";
   info.stochastic = true;
+  info.proves_no_path = false;  // gives up with limit after its budget
   info.params = rrt_options_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return std::make_unique<RrtPlanner>(rrt_options_decls().read(params));

@@ -304,10 +304,13 @@ class AcoPlanner final : public Planner {
     result.expanded_nodes = colony.steps();
     result.extra.emplace_back("successful_ants", static_cast<double>(colony.successful()));
     result.extra.emplace_back("iterations", static_cast<double>(colony.iterations_done()));
-    if (!colony.found()) {
+    // A deadline that stops the colony is a limit even with a path in hand: the path of an
+    // unfinished run depends on when the clock ran out (the planner contract).
+    if (!colony.found() || !completed) {
       result.failure = Failure::limit;
-      result.message = completed ? "no ant reached the goal in any iteration"
-                                 : "deadline passed before any ant reached the goal";
+      result.message = completed        ? "no ant reached the goal in any iteration"
+                       : colony.found() ? "deadline passed before the last iteration"
+                                        : "deadline passed before any ant reached the goal";
       return result;
     }
     result.failure = Failure::none;
@@ -330,6 +333,7 @@ PlannerInfo aco_planner() {
   info.source = "PLANNERS.md Baselines; paper 002 section 5, Table 2; Dorigo et al. 1996";
   info.expanded_nodes_meaning = "ant steps: moves made by all ants of all iterations";
   info.stochastic = true;
+  info.proves_no_path = false;  // gives up with limit after its budget
   info.params = aco_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return std::make_unique<AcoPlanner>(aco_decls().read(params));

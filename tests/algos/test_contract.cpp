@@ -1,0 +1,308 @@
+// The planner contract (docs/ARCHITECTURE.md), checked for every planner in planner_registry():
+// a planner's registry line is all it takes to be covered. Every call goes through
+// plan_checked(), the callers' one entry point, and every result is judged by the engine's own
+// execute_run() (validator, or trajectory judge for a simulated robot), never re-implemented here.
+//
+// On small random maps of every generator and several densities (solvable under no_corner_cut,
+// the strictest rule, so every planner has a path):
+// - a returned path is confirmed by the engine, a claimed no_path is never wrong, and a planner
+//   that proves there is no path (PlannerInfo::proves_no_path) never gives up with limit;
+// - start == goal succeeds with the one-point path at the start cell's centre;
+// - a walled-off goal gives no_path (proves_no_path) or limit (the others give up);
+// - an expired deadline gives limit; one that expires at poll n + 1 of a run that would poll more
+//   gives limit after at most kFurtherPolls more polls (Deadline::after_polls, deterministic);
+// - a start or goal outside the grid or on an obstacle gives invalid_input;
+// - the same seed gives the same result, twice in a row and with a fresh Scratch.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "algos/planner.h"
+#include "algos/registry.h"
+#include "engine/run_executor.h"
+#include "generators/map_generators.h"
+
+namespace agv {
+namespace {
+
+// Polls a planner may make after the first one that answered "expired": a sub-search that a
+// fusion planner started polls once more before the control loop's own poll stops the run.
+constexpr std::int64_t kFurtherPolls = 2;
+// Maps, per planner, on which a deadline is made to expire mid-plan.
+constexpr int kMidPlanMaps = 3;
+
+MapInstance contract_map(int i) {
+  static const char* const kGenerators[] = {"uniform", "blocks", "maze", "rooms"};
+  static const int kSides[] = {12, 16, 20};
+  static const double kDensities[] = {0.1, 0.2, 0.3};
+  MapSpec spec;
+  spec.generator = kGenerators[i % 4];
+  spec.width = kSides[i % 3];
+  spec.height = kSides[(i / 3) % 3];
+  spec.density = kDensities[(i / 4) % 3];
+  spec.room_size = 6;
+  spec.endpoints = (i % 2 == 0) ? EndpointMode::corners : EndpointMode::random;
+  spec.min_distance = 6.0;
+  spec.require_solvable = true;
+  spec.solvable_rule = CornerRule::no_corner_cut;
+  Rng rng(20261201, static_cast<std::uint64_t>(i));
+  return make_map(spec, rng);
+}
+
+// The small maps every check runs on.
+const std::vector<MapInstance>& small_maps() {
+  static const std::vector<MapInstance> maps = [] {
+    std::vector<MapInstance> v;
+    for (int i = 0; i < 12; ++i) v.push_back(contract_map(i));
+    return v;
+  }();
+  return maps;
+}
+
+// Small maps first, then nearly perfect mazes (96 and 160 cells a side) large enough that a grid
+// search polls its deadline several times (search_core.h polls every 1024 expansions): the mid-plan
+// check takes the first maps on which the planner polls at least twice.
+const std::vector<MapInstance>& mid_plan_maps() {
+  static const std::vector<MapInstance> maps = [] {
+    std::vector<MapInstance> v = small_maps();
+    for (int i = 0; i < 8; ++i) {
+      MapSpec spec;
+      spec.generator = "maze";
+      spec.width = i < 4 ? 96 : 160;
+      spec.height = i < 4 ? 96 : 160;
+      spec.density = i % 2 ? 0.45 : 0.47;  // nearly a perfect maze: one long winding path
+      spec.endpoints = EndpointMode::corners;
+      spec.require_solvable = true;
+      Rng rng(20261202, static_cast<std::uint64_t>(i));
+      v.push_back(make_map(spec, rng));
+    }
+    return v;
+  }();
+  return maps;
+}
+
+// The map with every neighbour of the goal blocked: no path under any corner rule, nor for a
+// straight segment (every way into the goal cell crosses a blocked neighbour).
+MapInstance walled_goal(const MapInstance& m) {
+  MapInstance walled = m;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const Cell c{m.goal.x + dx, m.goal.y + dy};
+      if ((dx != 0 || dy != 0) && walled.grid.in_bounds(c)) walled.grid.set_blocked(c, true);
+    }
+  return walled;
+}
+
+std::string describe(const MapInstance& m, int i) {
+  return "map " + std::to_string(i) + " (" + std::to_string(m.grid.width()) + "x" +
+         std::to_string(m.grid.height()) + ", start " + std::to_string(m.start.x) + "," +
+         std::to_string(m.start.y) + ", goal " + std::to_string(m.goal.x) + "," +
+         std::to_string(m.goal.y) + ")";
+}
+
+TEST(DeadlineAfterPolls, CountsPollsOverAllCopies) {
+  const Deadline d = Deadline::after_polls(3);
+  const Deadline copy = d;  // as a planner hands the request's deadline to a sub-planner
+  EXPECT_FALSE(d.expired());
+  EXPECT_FALSE(copy.expired());
+  EXPECT_FALSE(d.expired());
+  EXPECT_TRUE(copy.expired());
+  EXPECT_TRUE(d.expired());  // and stays expired
+  EXPECT_EQ(d.polls(), 5);
+  EXPECT_EQ(copy.polls(), 5);
+  EXPECT_TRUE(Deadline::after_polls(0).expired());
+  EXPECT_EQ(Deadline::never().polls(), 0);
+  EXPECT_FALSE(Deadline::never().expired());
+}
+
+// The registry's names: the parameter, so that test names and failure messages name the planner.
+std::vector<std::string> registered() {
+  std::vector<std::string> v;
+  for (const PlannerInfo& info : planner_registry()) v.push_back(info.name);
+  return v;
+}
+
+class PlannerContract : public testing::TestWithParam<std::string> {
+ protected:
+  const PlannerInfo& info() const { return *find_planner(GetParam()); }
+  const Planner& planner() {
+    if (!configured_.planner)
+      configured_ = configure_planner(info().name, nlohmann::json::object(), "contract");
+    return *configured_.planner;
+  }
+
+  // The engine's judgement of one run from `start` to `goal` on `m`, seed fixed per map.
+  RunOutput judged(const MapInstance& m, int i, Cell start, Cell goal, Deadline deadline,
+                   Scratch& scratch) {
+    MapReference ref(m.grid, start, goal);
+    Rng rng(7, static_cast<std::uint64_t>(i));
+    return execute_run(planner(), ref, rng, scratch, std::move(deadline), MotionTimeParams{});
+  }
+  RunOutput judged(const MapInstance& m, int i, Deadline deadline = Deadline::never()) {
+    return judged(m, i, m.start, m.goal, std::move(deadline), scratch_);
+  }
+
+  PlanResult planned(const MapInstance& m, int i, Cell start, Cell goal, Scratch& scratch,
+                     Deadline deadline = Deadline::never()) {
+    Rng rng(7, static_cast<std::uint64_t>(i));
+    return plan_checked(planner(),
+                        PlanRequest{m.grid, start, goal, rng, scratch, std::move(deadline)});
+  }
+
+  Scratch scratch_;
+
+ private:
+  ConfiguredPlanner configured_;
+};
+
+TEST_P(PlannerContract, ReturnedPathsAreConfirmedByTheEngine) {
+  int found = 0;
+  for (std::size_t i = 0; i < small_maps().size(); ++i) {
+    const MapInstance& m = small_maps()[i];
+    const RunOutput out = judged(m, static_cast<int>(i));
+    SCOPED_TRACE(describe(m, static_cast<int>(i)) + ": " + std::string(to_string(out.outcome)) +
+                 " " + out.message);
+    // The planner's claim and the engine's verdict agree; a failure is never a malformed path.
+    EXPECT_EQ(out.result.ok(), out.outcome == Outcome::success);
+    EXPECT_NE(out.outcome, Outcome::invalid_path);
+    EXPECT_NE(out.outcome, Outcome::invalid_input);
+    EXPECT_NE(out.outcome, Outcome::crash);
+    // A claimed no_path on these solvable maps is wrong; a planner that proves there is no path
+    // has no budget to give up on.
+    EXPECT_NE(out.outcome, Outcome::missed_path);
+    if (info().proves_no_path) EXPECT_NE(to_string(out.result.failure), std::string("limit"));
+    found += out.outcome == Outcome::success;
+  }
+  // Every planner solves some of these easy maps: a planner that never succeeds has no contract
+  // checked at all.
+  EXPECT_GT(found, 0);
+}
+
+TEST_P(PlannerContract, StartEqualsGoalGivesTheStart) {
+  for (std::size_t i = 0; i < small_maps().size(); ++i) {
+    const MapInstance& m = small_maps()[i];
+    const RunOutput out =
+        judged(m, static_cast<int>(i), m.start, m.start, Deadline::never(), scratch_);
+    SCOPED_TRACE(describe(m, static_cast<int>(i)) + ": " + std::string(to_string(out.outcome)) +
+                 " " + out.message);
+    EXPECT_EQ(out.outcome, Outcome::success);
+    ASSERT_FALSE(out.result.path.empty());
+    EXPECT_EQ(out.result.path.front(), centre(m.start));
+    EXPECT_EQ(out.result.path.back(), centre(m.start));
+  }
+}
+
+TEST_P(PlannerContract, WalledOffGoalGivesItsDocumentedFailure) {
+  const Failure expected = info().proves_no_path ? Failure::no_path : Failure::limit;
+  for (std::size_t i = 0; i < small_maps().size(); i += 3) {
+    const MapInstance m = walled_goal(small_maps()[i]);
+    const RunOutput out = judged(m, static_cast<int>(i));
+    SCOPED_TRACE(describe(m, static_cast<int>(i)) + ": " + out.result.message);
+    EXPECT_EQ(to_string(out.result.failure), std::string(to_string(expected)));
+    EXPECT_NE(out.outcome, Outcome::success);
+    EXPECT_NE(out.outcome, Outcome::invalid_path);
+  }
+}
+
+TEST_P(PlannerContract, ExpiredDeadlineGivesLimit) {
+  for (std::size_t i = 0; i < small_maps().size(); ++i) {
+    const MapInstance& m = small_maps()[i];
+    const PlanResult r = planned(m, static_cast<int>(i), m.start, m.goal, scratch_,
+                                 Deadline(Deadline::Clock::now()));
+    SCOPED_TRACE(describe(m, static_cast<int>(i)) + ": " + r.message);
+    EXPECT_EQ(to_string(r.failure), std::string("limit"));
+  }
+}
+
+TEST_P(PlannerContract, DeadlineExpiringMidPlanGivesLimitPromptly) {
+  int checked = 0;
+  for (std::size_t i = 0; i < mid_plan_maps().size() && checked < kMidPlanMaps; ++i) {
+    const MapInstance& m = mid_plan_maps()[i];
+    const int seed = static_cast<int>(i);
+    // The polls of the whole run, under a counting deadline that never expires.
+    const Deadline counting = Deadline::after_polls(std::numeric_limits<std::int64_t>::max());
+    planned(m, seed, m.start, m.goal, scratch_, counting);
+    const std::int64_t total = counting.polls();
+    if (total < 2) continue;
+    ++checked;
+    for (const std::int64_t allowed : {std::int64_t{1}, total / 2, total - 1}) {
+      const Deadline deadline = Deadline::after_polls(allowed);
+      const PlanResult r = planned(m, seed, m.start, m.goal, scratch_, deadline);
+      SCOPED_TRACE(describe(m, seed) + ": expires at poll " + std::to_string(allowed + 1) + " of " +
+                   std::to_string(total) + ": " + r.message);
+      EXPECT_EQ(to_string(r.failure), std::string("limit"));
+      EXPECT_GT(deadline.polls(), allowed);  // the expiring poll was made
+      EXPECT_LE(deadline.polls(), allowed + 1 + kFurtherPolls);
+    }
+  }
+  // Without a run long enough to poll twice this check would have checked nothing.
+  EXPECT_EQ(checked, kMidPlanMaps);
+}
+
+TEST_P(PlannerContract, EndpointOutsideTheGridOrBlockedIsRefused) {
+  const MapInstance& m = small_maps()[0];
+  MapInstance blocked_start = m, blocked_goal = m;
+  blocked_start.grid.set_blocked(m.start, true);
+  blocked_goal.grid.set_blocked(m.goal, true);
+  const Cell outside[] = {{-1, 0}, {0, -1}, {m.grid.width(), 0}, {0, m.grid.height()}};
+  struct Query {
+    const MapInstance* map;
+    Cell start, goal;
+  };
+  std::vector<Query> queries = {{&blocked_start, m.start, m.goal},
+                                {&blocked_goal, m.start, m.goal}};
+  for (const Cell c : outside) {
+    queries.push_back({&m, c, m.goal});
+    queries.push_back({&m, m.start, c});
+  }
+  for (const Query& q : queries) {
+    SCOPED_TRACE("start " + std::to_string(q.start.x) + "," + std::to_string(q.start.y) +
+                 ", goal " + std::to_string(q.goal.x) + "," + std::to_string(q.goal.y));
+    const PlanResult r = planned(*q.map, 0, q.start, q.goal, scratch_);
+    EXPECT_EQ(to_string(r.failure), std::string("invalid_input"));
+    EXPECT_FALSE(r.message.empty());
+    const RunOutput out = judged(*q.map, 0, q.start, q.goal, Deadline::never(), scratch_);
+    EXPECT_EQ(out.outcome, Outcome::invalid_input);
+  }
+}
+
+void expect_same(const PlanResult& a, const PlanResult& b) {
+  EXPECT_EQ(to_string(a.failure), std::string(to_string(b.failure)));
+  EXPECT_EQ(a.message, b.message);
+  EXPECT_EQ(a.path, b.path);
+  EXPECT_EQ(a.rule, b.rule);
+  EXPECT_EQ(a.expanded_nodes, b.expanded_nodes);
+  EXPECT_EQ(a.waypoints_before_sampling, b.waypoints_before_sampling);
+  EXPECT_EQ(a.extra, b.extra);
+  ASSERT_EQ(a.trajectory == nullptr, b.trajectory == nullptr);
+  if (a.trajectory) {
+    EXPECT_EQ(a.trajectory->position, b.trajectory->position);
+    EXPECT_EQ(a.trajectory->end_reason, b.trajectory->end_reason);
+  }
+}
+
+TEST_P(PlannerContract, SameSeedSameResult) {
+  for (std::size_t i = 0; i < small_maps().size(); i += 2) {
+    const MapInstance& m = small_maps()[i];
+    const int seed = static_cast<int>(i);
+    SCOPED_TRACE(describe(m, seed));
+    const PlanResult first = planned(m, seed, m.start, m.goal, scratch_);
+    const PlanResult again = planned(m, seed, m.start, m.goal, scratch_);
+    Scratch fresh;
+    const PlanResult fresh_result = planned(m, seed, m.start, m.goal, fresh);
+    expect_same(first, again);
+    expect_same(first, fresh_result);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, PlannerContract, testing::ValuesIn(registered()),
+                         [](const testing::TestParamInfo<std::string>& p) { return p.param; });
+
+}  // namespace
+}  // namespace agv

@@ -13,6 +13,7 @@
 #include "engine/run_executor.h"
 #include "engine/sweep_plan.h"
 #include "generators/movingai.h"
+#include "generators/registry.h"
 
 namespace agv {
 
@@ -122,16 +123,23 @@ int command_plan(const PlanCommand& cmd) {
     grid = read_map(cmd.map_file);
     if (cmd.start.empty() || cmd.goal.empty())
       throw InputError("--start and --goal are required with --map");
+    if (!cmd.gen_params.empty())
+      throw InputError("--gen-param: a generator parameter, meaningless with --map");
     map_doc = {{"file", cmd.map_file}};
   } else {
     SweepCell cell;
     const GridSize size = parse_size(cmd.size);
+    const GeneratorInfo& generator = generator_or_throw(cmd.generator, "--generator");
     cell.generator = cmd.generator;
     cell.size = size;
     cell.density = cmd.density;
     cell.key = cmd.generator + "/" + std::to_string(size.width) + "x" +
                std::to_string(size.height) + "/" + density_text(cmd.density);
     cell.spec.generator = cmd.generator;
+    cell.spec.params =
+        resolve_generator_params(generator, cli_generator_params(generator, cmd.gen_params),
+                                 "--gen-param", size.width, size.height)
+            .values();
     cell.spec.width = size.width;
     cell.spec.height = size.height;
     cell.spec.density = cmd.density;
@@ -153,7 +161,10 @@ int command_plan(const PlanCommand& cmd) {
     grid = std::move(inst.grid);
     start = inst.start;
     goal = inst.goal;
-    map_doc = {{"generator", cmd.generator}, {"cell", cell.key}, {"seed", cmd.seed},
+    map_doc = {{"generator", cmd.generator},
+               {"params", cell.spec.params},
+               {"cell", cell.key},
+               {"seed", cmd.seed},
                {"map_index", cmd.map_index}};
   }
   if (!cmd.start.empty()) start = parse_cell(cmd.start, "--start");

@@ -140,30 +140,4 @@ int command_validate(const std::string& config_path) {
   return 0;
 }
 
-int command_list(bool as_json) {
-  if (as_json) {
-    std::cout << registry_json().dump(2) << "\n";
-    return 0;
-  }
-  for (const auto& info : planner_registry()) {
-    std::cout << info.name << "  -  " << info.summary << "\n    source: " << info.source
-              << "\n    expanded_nodes: " << info.expanded_nodes_meaning
-              << (info.stochastic ? "\n    stochastic: draws from the run's RNG" : "") << "\n";
-    for (const auto& p : info.params) {
-      const auto j = p.to_json();
-      std::cout << "    " << p.name << " = " << p.default_value.dump();
-      if (p.type == ParamType::choice) {
-        std::string list;
-        for (const auto& c : p.choices) list += (list.empty() ? "" : "|") + c;
-        std::cout << "  (" << list << ")";
-      } else if (p.type != ParamType::boolean) {
-        std::cout << "  [" << j["min"].dump() << ", " << j["max"].dump() << "]";
-      }
-      std::cout << "\n        " << p.doc << "\n";
-    }
-    std::cout << "\n";
-  }
-  return 0;
-}
-
 }  // namespace agv

@@ -33,6 +33,7 @@ std::string locate_config(const std::string& path);
 
 int command_validate(const std::string& config_path);
 
+// Planners and generators; as_json: one object {"planners": [...], "generators": [...]}.
 int command_list(bool as_json);
 
 struct PlanCommand {
@@ -40,6 +41,7 @@ struct PlanCommand {
   std::vector<std::string> params;  // "key=value", applied to every planner that declares key
   std::string map_file;             // a MovingAI .map; else a generated grid
   std::string generator = "uniform";
+  std::vector<std::string> gen_params;  // "key=value", the generator's shape parameters
   std::string size = "32";
   double density = 0.2;
   std::string endpoints = "corners";

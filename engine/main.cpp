@@ -45,8 +45,10 @@ int main(int argc, char** argv) {
   validate_cmd->add_option("config", validate_path, "sweep config")->required();
 
   bool list_json = false;
-  auto* list_cmd = app.add_subcommand("list", "list planners, their parameters and defaults");
-  list_cmd->add_flag("--json", list_json, "print the registry as JSON");
+  auto* list_cmd =
+      app.add_subcommand("list", "list planners and map generators, their parameters and defaults");
+  list_cmd->add_flag("--json", list_json,
+                     "print the registries as one JSON object {planners, generators}");
 
   agv::PlanCommand plan;
   auto* plan_cmd = app.add_subcommand("plan", "run planners on one map and show the paths");
@@ -54,6 +56,8 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("--param", plan.params, "KEY=VALUE parameter (repeatable)");
   plan_cmd->add_option("--map", plan.map_file, "MovingAI .map file (else a generated grid)");
   plan_cmd->add_option("--generator", plan.generator, "generator for a generated grid");
+  plan_cmd->add_option("--gen-param", plan.gen_params,
+                       "KEY=VALUE shape parameter of the generator (repeatable)");
   plan_cmd->add_option("--size", plan.size, "N or WxH");
   plan_cmd->add_option("--density", plan.density, "obstacle density");
   plan_cmd->add_option("--endpoints", plan.endpoints, "corners or random");

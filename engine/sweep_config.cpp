@@ -120,8 +120,25 @@ std::vector<GridSize> parse_sizes(ObjectReader& r) {
   return sizes;
 }
 
+// A shape parameter in "map" is from configs before the generators were registered: say where
+// it goes now rather than calling it unknown.
+void refuse_moved_shape_params(const json& j) {
+  for (const auto& [key, value] : j.items()) {
+    for (const auto& g : generator_registry()) {
+      for (const auto& spec : g.params) {
+        if (spec.name != key) continue;
+        throw InputError(
+            "map." + key + ": a shape parameter of generator \"" + g.name +
+            "\"; it now goes in that generator's entry: \"generators\": [{\"name\": \"" + g.name +
+            "\", \"params\": {\"" + key + "\": " + value.dump() + "}}]");
+      }
+    }
+  }
+}
+
 void parse_map_options(const json& j, MapSpec& map) {
   ObjectReader r(j, "map.");
+  if (j.is_object()) refuse_moved_shape_params(j);
   const std::string endpoints = r.choice("endpoints", "corners", {"corners", "random"});
   map.endpoints = endpoints == "corners" ? EndpointMode::corners : EndpointMode::random;
   map.min_distance = r.number("min_distance", 0.0, 0.0, 1e6);
@@ -130,33 +147,61 @@ void parse_map_options(const json& j, MapSpec& map) {
       "solvable_rule", "no_corner_cut", {"allow", "no_squeeze", "no_corner_cut"}));
   map.max_attempts = static_cast<int>(r.integer("max_attempts", 1000, 1, 1000000));
   map.cell_edge = r.number("cell_edge", 1.0, 1e-6, 1e6);
-  map.block_min = static_cast<int>(r.integer("block_min", map.block_min, 1, 4096));
-  map.block_max = static_cast<int>(r.integer("block_max", map.block_max, 1, 4096));
-  if (map.block_max < map.block_min)
-    throw InputError("map.block_max: must be >= map.block_min");
-  map.corridor = static_cast<int>(r.integer("corridor", map.corridor, 1, 4096));
-  map.room_size = static_cast<int>(r.integer("room_size", map.room_size, 2, 4096));
-  map.door_width = static_cast<int>(r.integer("door_width", map.door_width, 1, 4096));
   r.finish();
 }
 
-std::vector<std::string> parse_generators(ObjectReader& r) {
+// Generator names (a planner's "only" scope).
+std::vector<std::string> parse_generator_names(ObjectReader& r) {
   std::vector<std::string> generators;
   const json& arr = require_array(r, "generators");
   for (std::size_t i = 0; i < arr.size(); ++i) {
     const std::string f = r.field("generators") + "[" + std::to_string(i) + "]";
     if (!arr[i].is_string()) throw InputError(f + ": expected a generator name");
     const auto name = arr[i].get<std::string>();
-    bool known = false;
-    for (const auto& g : generator_names()) known = known || g == name;
-    if (!known) {
-      std::string list;
-      for (const auto& g : generator_names()) list += (list.empty() ? "" : ", ") + g;
-      throw InputError(f + ": unknown generator \"" + name + "\" (known: " + list + ")");
-    }
+    generator_or_throw(name, f);
     generators.push_back(name);
   }
   return generators;
+}
+
+// The sweep's generators, each a name or {"name": ..., "params": {...}}; the shape parameters
+// are resolved once sizes are known (a maze corridor must fit every size).
+std::vector<GeneratorEntry> parse_generators(ObjectReader& r) {
+  std::vector<GeneratorEntry> generators;
+  std::set<std::string> names;
+  const json& arr = require_array(r, "generators");
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    const std::string f = r.field("generators") + "[" + std::to_string(i) + "]";
+    GeneratorEntry e;
+    if (arr[i].is_string()) {
+      e.name = arr[i].get<std::string>();
+    } else if (arr[i].is_object()) {
+      ObjectReader g(arr[i], f + ".");
+      if (!g.has("name")) throw InputError(f + ".name: missing");
+      e.name = g.string("name", "");
+      if (g.has("params")) e.params = g.raw("params");
+      g.finish();
+    } else {
+      throw InputError(f + ": expected a generator name or {\"name\": ..., \"params\": {...}}");
+    }
+    generator_or_throw(e.name, f);
+    if (!names.insert(e.name).second)
+      throw InputError(f + ": generator \"" + e.name + "\" appears twice (it names the cells)");
+    generators.push_back(std::move(e));
+  }
+  return generators;
+}
+
+void resolve_generators(std::vector<GeneratorEntry>& generators,
+                        const std::vector<GridSize>& sizes) {
+  for (std::size_t i = 0; i < generators.size(); ++i) {
+    GeneratorEntry& e = generators[i];
+    const std::string where = "generators[" + std::to_string(i) + "].params";
+    const GeneratorInfo& info = *find_generator(e.name);
+    for (const auto& size : sizes)
+      e.resolved =
+          resolve_generator_params(info, e.params, where, size.width, size.height).values();
+  }
 }
 
 std::vector<double> parse_densities(ObjectReader& r) {
@@ -184,12 +229,14 @@ void require_subset(const std::vector<T>& values, const std::vector<T>& sweep,
 PlannerScope parse_scope(const json& j, const std::string& where, const SweepConfig& c) {
   ObjectReader r(j, where + ".only.");
   PlannerScope s;
-  if (r.has("generators")) s.generators = parse_generators(r);
+  if (r.has("generators")) s.generators = parse_generator_names(r);
   if (r.has("sizes")) s.sizes = parse_sizes(r);
   if (r.has("densities")) s.densities = parse_densities(r);
   s.maps_per_cell = static_cast<int>(r.integer("maps_per_cell", 0, 1, c.maps_per_cell));
   r.finish();
-  require_subset(s.generators, c.generators, r.field("generators"), "generators");
+  std::vector<std::string> sweep_generators;
+  for (const auto& g : c.generators) sweep_generators.push_back(g.name);
+  require_subset(s.generators, sweep_generators, r.field("generators"), "generators");
   require_subset(s.sizes, c.sizes, r.field("sizes"), "sizes");
   require_subset(s.densities, c.densities, r.field("densities"), "densities");
   return s;
@@ -235,6 +282,7 @@ SweepConfig parse_config(const json& j) {
   if (r.has("generators")) c.generators = parse_generators(r);
   if (r.has("sizes")) c.sizes = parse_sizes(r);
   if (r.has("densities")) c.densities = parse_densities(r);
+  resolve_generators(c.generators, c.sizes);
   c.maps_per_cell = static_cast<int>(r.integer("maps_per_cell", c.maps_per_cell, 1, 10000000));
   if (r.has("map")) parse_map_options(r.raw("map"), c.map);
   if (!r.has("planners")) throw InputError("planners: missing (list at least one planner)");
@@ -325,10 +373,13 @@ json config_as_run(const SweepConfig& c) {
     }
     planners.push_back(std::move(entry));
   }
+  json generators = json::array();
+  for (const auto& g : c.generators)
+    generators.push_back({{"name", g.name}, {"params", g.resolved}});
   const MapSpec& m = c.map;
   return {{"name", c.name},
           {"seed", c.seed},
-          {"generators", c.generators},
+          {"generators", generators},
           {"sizes", sizes_json(c.sizes)},
           {"densities", c.densities},
           {"maps_per_cell", c.maps_per_cell},
@@ -338,12 +389,7 @@ json config_as_run(const SweepConfig& c) {
             {"require_solvable", m.require_solvable},
             {"solvable_rule", std::string(to_string(m.solvable_rule))},
             {"max_attempts", m.max_attempts},
-            {"cell_edge", m.cell_edge},
-            {"block_min", m.block_min},
-            {"block_max", m.block_max},
-            {"corridor", m.corridor},
-            {"room_size", m.room_size},
-            {"door_width", m.door_width}}},
+            {"cell_edge", m.cell_edge}}},
           {"planners", planners},
           {"baseline", c.baseline},
           {"time_limit_s", c.time_limit_s},

@@ -4,14 +4,14 @@
 // an InputError naming the field (exit code 2), never a silently ignored setting.
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "algos/registry.h"
 #include "engine/metrics.h"
 #include "generators/map_generators.h"
+#include "generators/registry.h"
 
 namespace agv {
 
@@ -35,6 +35,13 @@ struct PlannerScope {
   }
 };
 
+// One generator of the sweep: a name, or {"name": ..., "params": {...}} in the config.
+struct GeneratorEntry {
+  std::string name;  // registry name; unique within the sweep (it names the cells)
+  nlohmann::json params = nlohmann::json::object();    // as given
+  nlohmann::json resolved = nlohmann::json::object();  // every shape parameter with its value
+};
+
 struct PlannerEntry {
   std::string label;  // unique within the sweep; defaults to the registry name
   std::string name;   // registry name
@@ -46,11 +53,11 @@ struct PlannerEntry {
 struct SweepConfig {
   std::string name = "sweep";
   std::uint64_t seed = 1;
-  std::vector<std::string> generators = {"uniform"};
+  std::vector<GeneratorEntry> generators = {{"uniform"}};
   std::vector<GridSize> sizes = {{64, 64}};
   std::vector<double> densities = {0.2};
   int maps_per_cell = 100;
-  MapSpec map;  // endpoints, require_solvable, generator shape; size/density/generator per cell
+  MapSpec map;  // endpoints, require_solvable, ...; generator, shape, size, density per cell
   std::vector<PlannerEntry> planners;
   std::string baseline;  // planner label the paired comparisons use
   double time_limit_s = 10.0;  // per run, cooperative
@@ -70,7 +77,8 @@ SweepConfig load_config(const std::string& path);
 // report that the determinism guarantee covers.
 nlohmann::json config_as_run(const SweepConfig& config);
 
-// Stable hash of config_as_run (journal compatibility, task ids).
+// Stable hash of config_as_run (journal compatibility, task ids). Only the generators the sweep
+// uses enter it, so a generator or parameter added to the registry leaves journals valid.
 std::string config_hash(const SweepConfig& config);
 
 }  // namespace agv

@@ -14,7 +14,8 @@ std::string density_text(double density) {
 SweepPlan plan_sweep(const SweepConfig& config) {
   SweepPlan plan;
   plan.maps_per_cell = config.maps_per_cell;
-  for (const auto& generator : config.generators) {
+  for (const auto& entry : config.generators) {
+    const std::string& generator = entry.name;
     for (const auto& size : config.sizes) {
       for (double density : config.densities) {
         SweepCell cell;
@@ -26,6 +27,7 @@ SweepPlan plan_sweep(const SweepConfig& config) {
                    std::to_string(size.height) + "/" + density_text(density);
         cell.spec = config.map;
         cell.spec.generator = generator;
+        cell.spec.params = entry.resolved;
         cell.spec.width = size.width;
         cell.spec.height = size.height;
         cell.spec.density = density;

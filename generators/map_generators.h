@@ -1,13 +1,14 @@
 #pragma once
 // Random maps for sweeps, each a pure function of its spec and the RNG handed in, plus the
-// start/goal protocols. (Interface fixed; implementation in map_generators.cpp.)
+// start/goal protocols. The generators themselves and their shape parameters are in
+// generators/registry.h.
 
+#include <nlohmann/json.hpp>
 #include <string>
-#include <vector>
 
-#include "core/rng.h"
 #include "core/corner_rule.h"
 #include "core/grid.h"
+#include "core/rng.h"
 
 namespace agv {
 
@@ -18,22 +19,18 @@ enum class EndpointMode {
 };
 
 struct MapSpec {
-  std::string generator = "uniform";  // uniform | blocks | maze | rooms
+  std::string generator = "uniform";  // a generator_registry() name
+  // The generator's shape parameters; missing ones take their defaults (generators/registry.h).
+  nlohmann::json params = nlohmann::json::object();
   int width = 64;
   int height = 64;
-  double density = 0.2;  // obstacle fraction in [0, 1); see map_generators.cpp per generator
+  double density = 0.2;  // obstacle fraction in [0, 1); what it means: each generator's file
   double cell_edge = 1.0;
   EndpointMode endpoints = EndpointMode::corners;
   double min_distance = 0.0;  // random endpoints only
   bool require_solvable = false;
   CornerRule solvable_rule = CornerRule::no_corner_cut;  // the run's strictest corner rule
   int max_attempts = 1000;  // require_solvable: regenerations before giving up
-  // Generator shape parameters (documented in map_generators.cpp).
-  int block_min = 2;  // blocks: side range of rectangular obstacles
-  int block_max = 5;
-  int corridor = 1;   // maze: corridor and wall width in cells
-  int room_size = 8;  // rooms: room side in cells
-  int door_width = 2; // rooms: opening width in cells
 };
 
 struct MapInstance {
@@ -43,11 +40,8 @@ struct MapInstance {
   int rejections = 0;  // maps thrown away by require_solvable before this one
 };
 
-// The generator names, for config validation.
-const std::vector<std::string>& generator_names();
-
-// Throws std::invalid_argument naming the field for an impossible spec, and
-// std::runtime_error when require_solvable fails max_attempts times.
+// Throws std::invalid_argument naming the field for an impossible spec (a shape parameter as
+// "params.<name>"), and std::runtime_error when require_solvable fails max_attempts times.
 MapInstance make_map(const MapSpec& spec, Rng& rng);
 
 }  // namespace agv

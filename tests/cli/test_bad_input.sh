@@ -55,6 +55,15 @@ expect "maps_per_cell out of range" 'maps_per_cell: -3 is outside' "$bin" run ma
 good_config report.json | sed 's/"seed": 1/"seed": 1, "sede": 2/' >typo.json
 expect "unknown field" 'sede: unknown field' "$bin" run typo.json
 
+good_config report.json | sed 's/"sizes"/"generators": ["uniform", {"name": "rooms", "params": {"room_size": 1}}], "sizes"/' >room_size.json
+expect "shape parameter out of range" 'generators\[1\]\.params\.room_size: 1 is outside \[2, 8192\]' "$bin" run room_size.json
+
+good_config report.json | sed 's/"sizes"/"generators": [{"name": "maze", "params": {"walls": 2}}], "sizes"/' >shape_unknown.json
+expect "unknown shape parameter" 'generators\[0\]\.params\.walls: unknown parameter' "$bin" validate shape_unknown.json
+
+good_config report.json | sed 's/"sizes"/"generators": ["rooms"], "map": {"room_size": 6}, "sizes"/' >shape_in_map.json
+expect "shape parameter in map (old config)" 'map\.room_size: a shape parameter of generator "rooms"; it now goes in' "$bin" run shape_in_map.json
+
 expect "missing config file" 'nope.json: cannot open' "$bin" run nope.json --out report.json
 good_config report.json >good.json
 expect "resume into another journal" '--resume: the journal is appended to' \
@@ -71,6 +80,11 @@ expect "start outside the grid" '--start: \(5,0\) is outside' "$bin" plan --map 
 expect "goal on an obstacle" '--goal: \(1,1\) is an obstacle' "$bin" plan --map ok.map --start 0,0 --goal 1,1
 expect "unknown CLI planner" 'unknown planner "nope"' "$bin" plan --planner nope
 expect "unknown CLI parameter" '--param frobnicate' "$bin" plan --param frobnicate=3
+expect "unknown CLI generator" 'unknown generator "spiral"' "$bin" plan --generator spiral
+expect "unknown CLI generator parameter" '--gen-param corridor: generator rooms has no such parameter' \
+  "$bin" plan --generator rooms --gen-param corridor=2
+expect "CLI generator parameter out of range" '--gen-param.corridor: 40 is outside \[1, 32\]' \
+  "$bin" plan --generator maze --size 32 --gen-param corridor=40
 printf 'version 1\n0\tok.map\t3\t3\t0\t0\t1\t1\t1.41421356\n' >obstacle.scen
 expect "scen: goal on an obstacle" 'query 1: goal \(1,1\) is an obstacle' "$bin" scen ok.map obstacle.scen
 printf 'version 1\n0\tok.map\t3\t3\t0\t0\tx\t1\t1.4\n' >garbled.scen

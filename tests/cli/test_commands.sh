@@ -16,8 +16,23 @@ check() {  # NAME COMMAND...
   fi
 }
 
-check "list --json parses and names astar" sh -c "'$bin' list --json | $py -c 'import json,sys; r=json.load(sys.stdin); assert any(p[\"name\"]==\"astar\" for p in r); assert all(\"params\" in p for p in r)'"
+check "list --json parses and names astar and rooms" sh -c "'$bin' list --json | $py -c 'import json,sys; r=json.load(sys.stdin); assert set(r)=={\"planners\",\"generators\"}; assert any(p[\"name\"]==\"astar\" for p in r[\"planners\"]); assert all(\"params\" in p for p in r[\"planners\"] + r[\"generators\"]); g={x[\"name\"]: x for x in r[\"generators\"]}; assert [p[\"name\"] for p in g[\"rooms\"][\"params\"]]==[\"room_size\",\"door_width\"]'"
 check "list prints parameters" sh -c "'$bin' list | grep -q 'corner_rule'"
+check "list prints the generators" sh -c "'$bin' list | grep -q '^rooms  -  ' && '$bin' list | grep -q 'door_width = 2'"
+check "plan --gen-param reaches the generator" sh -c "'$bin' plan --generator rooms --size 20 --density 0.2 --no-ascii --json | $py -c 'import json,sys; d=json.load(sys.stdin); assert d[\"map\"][\"params\"]=={\"door_width\":2,\"room_size\":8}' && '$bin' plan --generator rooms --size 20 --density 0.2 --gen-param room_size=4 --no-ascii --json | $py -c 'import json,sys; d=json.load(sys.stdin); assert d[\"map\"][\"params\"][\"room_size\"]==4'"
+cat >rooms4.json <<'JSON'
+{"name": "replay", "seed": 5, "generators": [{"name": "rooms", "params": {"room_size": 4}}],
+ "sizes": [20], "densities": [0.2], "maps_per_cell": 2, "planners": ["astar"]}
+JSON
+check "plan --gen-param rebuilds the map a sweep cell produced" sh -c "'$bin' run rooms4.json --out rooms4.report.json --runs-out rooms4.jsonl --quiet && '$bin' plan --generator rooms --gen-param room_size=4 --size 20 --density 0.2 --seed 5 --map-index 1 --json >replay.json && '$bin' plan --generator rooms --size 20 --density 0.2 --seed 5 --map-index 1 --json >default.json && $py -c '
+import json
+rec = [r for r in map(json.loads, open(\"rooms4.jsonl\")) if r.get(\"map_index\") == 1][0]
+mine, other = (json.load(open(f)) for f in (\"replay.json\", \"default.json\"))
+rows = mine[\"map\"][\"rows\"]
+assert abs(sum(r.count(\"@\") for r in rows) / 400 - rec[\"map\"][\"obstacle_fraction\"]) < 1e-12
+assert mine[\"runs\"][0][\"metrics\"][\"path_length\"] == rec[\"metrics\"][\"path_length\"]
+assert other[\"map\"][\"rows\"] != rows, \"room_size did not reach the generator\"
+'"
 check "validate the quick config" "$bin" validate "$src/configs/quick.json"
 check "plan on a generated grid draws S, G and a path" sh -c "'$bin' plan --planner astar --planner dijkstra --size 24 --density 0.2 --seed 3 | grep -q 'S' && '$bin' plan --size 24 --density 0.2 | grep -q 'astar: success'"
 check "plan --json-out writes a path document" sh -c "'$bin' plan --size 16 --density 0.1 --json-out p.json --no-ascii >/dev/null && $py -c 'import json; d=json.load(open(\"p.json\")); assert d[\"runs\"][0][\"outcome\"]==\"success\" and len(d[\"runs\"][0][\"path\"])>1'"

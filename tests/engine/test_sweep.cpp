@@ -9,7 +9,9 @@
 
 #include "engine/report.h"
 #include "engine/sweep_config.h"
+#include "engine/sweep_plan.h"
 #include "engine/sweep_runner.h"
+#include "generators/registry.h"
 
 namespace agv {
 namespace {
@@ -221,6 +223,93 @@ TEST(Sweep, ScopedPlannerRunsOnlyOnItsCellsAndMapsAndIsPairedThere) {
   EXPECT_EQ(report["coverage"]["runs_present"], 46);
   EXPECT_EQ(report["config"]["planners"][1]["only"]["maps_per_cell"], 3);
   EXPECT_FALSE(report["config"]["planners"][0].contains("only"));
+}
+
+TEST(Config, GeneratorEntriesTakeShapeParams) {
+  const json j = {{"generators", {"uniform", {{"name", "rooms"}, {"params", {{"room_size", 6}}}}}},
+                  {"sizes", {16}},
+                  {"planners", {"astar"}}};
+  const SweepConfig c = parse_config(j);
+  ASSERT_EQ(c.generators.size(), 2U);
+  EXPECT_EQ(c.generators[1].resolved, (json{{"door_width", 2}, {"room_size", 6}}));
+  const json run = config_as_run(c);
+  // Only the generators the sweep uses, each with every shape parameter resolved; "map" keeps
+  // the common options only.
+  EXPECT_EQ(run["generators"],
+            (json{{{"name", "uniform"}, {"params", json::object()}},
+                  {{"name", "rooms"}, {"params", {{"door_width", 2}, {"room_size", 6}}}}}));
+  EXPECT_FALSE(run["map"].contains("room_size"));
+  EXPECT_FALSE(run["map"].contains("block_min"));
+  const SweepPlan plan = plan_sweep(c);
+  EXPECT_EQ(plan.cells.back().spec.generator, "rooms");
+  EXPECT_EQ(plan.cells.back().spec.params, c.generators[1].resolved);
+  EXPECT_EQ(plan.cells.back().key, "rooms/16x16/0.2");
+  // Reads back as itself (isolation workers and merges parse the config as run).
+  EXPECT_EQ(config_as_run(parse_config(run)).dump(), run.dump());
+}
+
+TEST(Config, ShapeParamErrorsNameTheField) {
+  const json base = {{"generators", {"uniform", {{"name", "rooms"}, {"params", json::object()}}}},
+                     {"sizes", {16}},
+                     {"planners", {"astar"}}};
+  EXPECT_EQ(message(base), "no error");
+  json j = base;
+  j["generators"][1]["params"] = {{"room_size", 1}};
+  EXPECT_EQ(message(j), "generators[1].params.room_size: 1 is outside [2, 8192]");
+  j["generators"][1]["params"] = {{"corridor", 2}};
+  EXPECT_NE(message(j).find("generators[1].params.corridor: unknown parameter"), std::string::npos)
+      << message(j);
+  j["generators"][1] = {{"name", "blocks"}, {"params", {{"block_min", 4}, {"block_max", 3}}}};
+  EXPECT_EQ(message(j), "generators[1].params.block_max: 3 is smaller than block_min (4)");
+  j["generators"][1] = {{"name", "maze"}, {"params", {{"corridor", 17}}}};
+  EXPECT_NE(message(j).find("generators[1].params.corridor: 17 is outside [1, 16]"),
+            std::string::npos)
+      << message(j);
+  j["generators"][1] = {{"name", "maze"}, {"shape", {{"corridor", 2}}}};
+  EXPECT_EQ(message(j), "generators[1].shape: unknown field");
+  j["generators"][1] = {{"params", json::object()}};
+  EXPECT_EQ(message(j), "generators[1].name: missing");
+  j["generators"][1] = "uniform";
+  EXPECT_NE(message(j).find("generators[1]: generator \"uniform\" appears twice"),
+            std::string::npos);
+  j["generators"][1] = 3;
+  EXPECT_NE(message(j).find("generators[1]: expected a generator name"), std::string::npos);
+}
+
+TEST(Config, ShapeParamInMapSaysWhereItGoes) {
+  const json j = {{"generators", {"rooms"}}, {"planners", {"astar"}}, {"map", {{"room_size", 6}}}};
+  EXPECT_EQ(message(j),
+            "map.room_size: a shape parameter of generator \"rooms\"; it now goes in that "
+            "generator's entry: \"generators\": [{\"name\": \"rooms\", \"params\": "
+            "{\"room_size\": 6}}]");
+}
+
+// Only the generators a sweep uses enter its hash: a generator added to the registry (or a
+// parameter of one the sweep does not use) leaves existing journals valid.
+TEST(Config, HashIgnoresGeneratorsTheSweepDoesNotUse) {
+  const json j = {{"generators", {"uniform", "maze"}}, {"sizes", {16}}, {"planners", {"astar"}}};
+  const std::string before = config_hash(parse_config(j));
+  GeneratorInfo extra;
+  extra.name = "test_hash_extra";
+  extra.summary = "a generator only this test knows";
+  extra.params = {ParamSpec::integer("spacing", 3, 1, 9, "unused")};
+  extra.generate = [](const Params&, MapContext& ctx) {
+    ctx.canvas.reset(ctx.width, ctx.height, false);
+  };
+  add_generator_for_testing(extra);
+  EXPECT_EQ(config_hash(parse_config(j)), before);
+  // The new generator is usable and, once used, does enter the hash.
+  json with = j;
+  with["generators"].push_back({{"name", "test_hash_extra"}, {"params", {{"spacing", 4}}}});
+  const SweepConfig c = parse_config(with);
+  EXPECT_NE(config_hash(c), before);
+  EXPECT_EQ(config_as_run(c)["generators"][2]["params"], (json{{"spacing", 4}}));
+  // Spelling out a default is the same config as leaving it out.
+  json spelled = j;
+  spelled["generators"][1] = {{"name", "maze"}, {"params", {{"corridor", 1}}}};
+  EXPECT_EQ(config_hash(parse_config(spelled)), before);
+  spelled["generators"][1]["params"]["corridor"] = 2;
+  EXPECT_NE(config_hash(parse_config(spelled)), before);
 }
 
 TEST(Config, ShippedConfigsParse) {

@@ -14,8 +14,9 @@
 
 #include "core/connectivity.h"
 #include "core/corner_rule.h"
-#include "generators/map_generators.h"
 #include "core/rng.h"
+#include "generators/map_generators.h"
+#include "generators/registry.h"
 
 namespace agv {
 namespace {
@@ -82,6 +83,21 @@ MapSpec spec_of(const std::string& generator, int w, int h, double density) {
   return s;
 }
 
+// Sets the shape parameters among `values` that the spec's generator declares (a loop over every
+// generator sets the maze's corridor and the rooms' room_size alike).
+void set_shape(MapSpec& s, const nlohmann::json& values) {
+  const GeneratorInfo* info = find_generator(s.generator);
+  ASSERT_NE(info, nullptr) << s.generator;
+  for (const auto& p : info->params)
+    if (values.contains(p.name)) s.params[p.name] = values[p.name];
+}
+
+std::vector<std::string> generator_names() {
+  std::vector<std::string> names;
+  for (const auto& g : generator_registry()) names.push_back(g.name);
+  return names;
+}
+
 MapInstance make(const MapSpec& s, std::uint64_t seed) {
   Rng rng(seed, 17);
   return make_map(s, rng);
@@ -94,6 +110,30 @@ std::int64_t target_count(const MapSpec& s) {
 
 TEST(MapGenerators, NamesAreListed) {
   EXPECT_EQ(generator_names(), (std::vector<std::string>{"uniform", "blocks", "maze", "rooms"}));
+}
+
+// The defaults the registry declares are the maps the configs have always produced: a spec
+// that spells them out draws the same map as one that leaves them to the defaults.
+TEST(MapGenerators, DeclaredDefaultsAreTheDefaults) {
+  const std::vector<std::pair<std::string, nlohmann::json>> spelled = {
+      {"blocks", {{"block_min", 2}, {"block_max", 5}}},
+      {"maze", {{"corridor", 1}}},
+      {"rooms", {{"room_size", 8}, {"door_width", 2}}}};
+  for (const auto& [gen, params] : spelled) {
+    MapSpec implicit = spec_of(gen, 37, 29, 0.3);
+    MapSpec explicit_ = implicit;
+    explicit_.params = params;
+    MapSpec other = implicit;
+    other.params = params;
+    other.params.begin().value() = params.begin().value().get<int>() + 1;
+    for (std::uint64_t seed = 0; seed < 4; ++seed) {
+      EXPECT_TRUE(make(implicit, seed).grid.same_cells(make(explicit_, seed).grid)) << gen;
+    }
+    bool any_differs = false;
+    for (std::uint64_t seed = 0; seed < 4; ++seed)
+      any_differs = any_differs || !make(implicit, seed).grid.same_cells(make(other, seed).grid);
+    EXPECT_TRUE(any_differs) << gen << ": the parameter does not reach the generator";
+  }
 }
 
 TEST(MapGenerators, UniformHasExactObstacleCount) {
@@ -120,8 +160,7 @@ TEST(MapGenerators, BlocksHaveExactObstacleCountAndBlockShapes) {
   for (double p : {0.0, 0.05, 0.2, 0.4, 0.7, 0.95}) {
     for (std::uint64_t seed = 0; seed < 5; ++seed) {
       MapSpec s = spec_of("blocks", 40, 30, p);
-      s.block_min = 3;
-      s.block_max = 6;
+      s.params = {{"block_min", 3}, {"block_max", 6}};
       const MapInstance m = make(s, seed);
       ASSERT_EQ(m.grid.obstacle_count(), target_count(s)) << "p=" << p;
     }
@@ -129,7 +168,7 @@ TEST(MapGenerators, BlocksHaveExactObstacleCountAndBlockShapes) {
   // With a single block size, obstacles come in 4x4 squares (clipped at the edges): at low
   // density few cells can be isolated.
   MapSpec s = spec_of("blocks", 60, 60, 0.1);
-  s.block_min = s.block_max = 4;
+  s.params = {{"block_min", 4}, {"block_max", 4}};
   const MapInstance m = make(s, 1);
   int isolated = 0;
   for (int y = 0; y < 60; ++y) {
@@ -181,7 +220,7 @@ TEST(MapGenerators, MazeBraidsDownToDensityAndStaysConnected) {
     for (double p : {0.0, 0.1, 0.25, 0.35, 0.4}) {
       for (std::uint64_t seed = 0; seed < 4; ++seed) {
         MapSpec s = spec_of("maze", 61, 50, p);
-        s.corridor = corridor;
+        s.params["corridor"] = corridor;
         const MapInstance m = make(s, seed);
         const std::int64_t t = target_count(s);
         // At or below the target, by less than one (possibly stretched) wall piece.
@@ -205,8 +244,7 @@ TEST(MapGenerators, MazeAboveItsWallFractionGetsClutterToTheExactCount) {
 TEST(MapGenerators, RoomsHaveWallsDoorsAndClutter) {
   // 35 = 4 rooms of 8 + 3 walls: walls at x, y = 8, 17, 26.
   MapSpec s = spec_of("rooms", 35, 35, 0.3);
-  s.room_size = 8;
-  s.door_width = 2;
+  s.params = {{"room_size", 8}, {"door_width", 2}};
   for (std::uint64_t seed = 0; seed < 5; ++seed) {
     const MapInstance m = make(s, seed);
     EXPECT_EQ(m.grid.obstacle_count(), target_count(s));
@@ -230,8 +268,7 @@ TEST(MapGenerators, CornersAreReservedFree) {
     for (double p : {0.0, 0.5, 0.9, 0.99}) {
       for (std::uint64_t seed = 0; seed < 5; ++seed) {
         MapSpec s = spec_of(gen, 23, 17, p);
-        s.corridor = 2;
-        s.room_size = 4;
+        set_shape(s, {{"corridor", 2}, {"room_size", 4}});
         const MapInstance m = make(s, seed);
         EXPECT_EQ(m.start, (Cell{0, 16}));
         EXPECT_EQ(m.goal, (Cell{22, 0}));
@@ -254,7 +291,7 @@ TEST(MapGenerators, RequireSolvableHoldsAndCountsRejections) {
         MapSpec s = spec_of(gen, 31, 31, p);
         s.require_solvable = true;
         s.solvable_rule = rule;
-        s.room_size = 5;
+        set_shape(s, {{"room_size", 5}});
         const MapInstance m = make(s, seed);
         ASSERT_TRUE(bfs_connected(m.grid, m.start, m.goal, rule)) << gen;
         total_rejections += m.rejections;
@@ -319,31 +356,38 @@ TEST(MapGenerators, ImpossibleRequestsFailClearly) {
 
 TEST(MapGenerators, BadSpecsNameTheField) {
   struct Case {
+    std::string generator;
     std::function<void(MapSpec&)> mutate;
     std::string field;
   };
   const std::vector<Case> cases = {
-      {[](MapSpec& s) { s.generator = "spiral"; }, "generator"},
-      {[](MapSpec& s) { s.width = 1; }, "width"},
-      {[](MapSpec& s) { s.width = 8193; }, "width"},
-      {[](MapSpec& s) { s.height = 0; }, "height"},
-      {[](MapSpec& s) { s.density = 1.2; }, "density: 1.2 is outside [0, 1)"},
-      {[](MapSpec& s) { s.density = 1.0; }, "density"},
-      {[](MapSpec& s) { s.density = -0.1; }, "density"},
-      {[](MapSpec& s) { s.density = std::nan(""); }, "density"},
-      {[](MapSpec& s) { s.cell_edge = 0.0; }, "cell_edge"},
-      {[](MapSpec& s) { s.min_distance = -1.0; }, "min_distance"},
-      {[](MapSpec& s) { s.min_distance = 100.0; }, "min_distance"},
-      {[](MapSpec& s) { s.max_attempts = 0; }, "max_attempts"},
-      {[](MapSpec& s) { s.block_min = 0; }, "block_min"},
-      {[](MapSpec& s) { s.block_max = 1; }, "block_max"},
-      {[](MapSpec& s) { s.corridor = 0; }, "corridor"},
-      {[](MapSpec& s) { s.corridor = 65; }, "corridor"},
-      {[](MapSpec& s) { s.room_size = 0; }, "room_size"},
-      {[](MapSpec& s) { s.door_width = 0; }, "door_width"},
+      {"uniform", [](MapSpec& s) { s.generator = "spiral"; }, "generator"},
+      {"uniform", [](MapSpec& s) { s.width = 1; }, "width"},
+      {"uniform", [](MapSpec& s) { s.width = 8193; }, "width"},
+      {"uniform", [](MapSpec& s) { s.height = 0; }, "height"},
+      {"uniform", [](MapSpec& s) { s.density = 1.2; }, "density: 1.2 is outside [0, 1)"},
+      {"uniform", [](MapSpec& s) { s.density = 1.0; }, "density"},
+      {"uniform", [](MapSpec& s) { s.density = -0.1; }, "density"},
+      {"uniform", [](MapSpec& s) { s.density = std::nan(""); }, "density"},
+      {"uniform", [](MapSpec& s) { s.cell_edge = 0.0; }, "cell_edge"},
+      {"uniform", [](MapSpec& s) { s.min_distance = -1.0; }, "min_distance"},
+      {"uniform", [](MapSpec& s) { s.min_distance = 100.0; }, "min_distance"},
+      {"uniform", [](MapSpec& s) { s.max_attempts = 0; }, "max_attempts"},
+      {"uniform", [](MapSpec& s) { s.params["corridor"] = 2; }, "params.corridor: unknown"},
+      {"blocks", [](MapSpec& s) { s.params["block_min"] = 0; }, "params.block_min"},
+      {"blocks", [](MapSpec& s) { s.params["block_max"] = 1; }, "params.block_max: 1 is smaller"},
+      {"blocks", [](MapSpec& s) { s.params["block_max"] = 8193; }, "params.block_max"},
+      {"maze", [](MapSpec& s) { s.params["corridor"] = 0; }, "params.corridor"},
+      {"maze", [](MapSpec& s) { s.params["corridor"] = 65; },
+       "params.corridor: 65 is outside [1, 64]"},
+      {"maze", [](MapSpec& s) { s.params["corridor"] = 1.5; },
+       "params.corridor: expected an integer"},
+      {"rooms", [](MapSpec& s) { s.params["room_size"] = 1; }, "params.room_size"},
+      {"rooms", [](MapSpec& s) { s.params["door_width"] = 0; }, "params.door_width"},
+      {"rooms", [](MapSpec& s) { s.params = nlohmann::json::array(); }, "params: "},
   };
   for (const Case& c : cases) {
-    MapSpec s = spec_of("uniform", 64, 64, 0.2);
+    MapSpec s = spec_of(c.generator, 64, 64, 0.2);
     c.mutate(s);
     try {
       make(s, 1);

@@ -9,69 +9,68 @@ namespace agv {
 
 namespace {
 
-const std::vector<std::string>& shortcut_names() {
-  static const std::vector<std::string> names = {
-      "none", "collinear", "turning_points", "greedy", "forward", "from_goal", "direct_midpoint"};
-  return names;
-}
-const std::vector<std::string>& smoothing_names() {
-  static const std::vector<std::string> names = {"none", "bezier", "bspline"};
-  return names;
+const ChoiceTable<ShortcutMode>& shortcut_modes() {
+  static const ChoiceTable<ShortcutMode> table = {
+      {"none", ShortcutMode::none},
+      {"collinear", ShortcutMode::collinear},
+      {"turning_points", ShortcutMode::turning_points},
+      {"greedy", ShortcutMode::greedy},
+      {"forward", ShortcutMode::forward},
+      {"from_goal", ShortcutMode::from_goal},
+      {"direct_midpoint", ShortcutMode::direct_midpoint}};
+  return table;
 }
 
-template <class E>
-E enum_of(const std::vector<std::string>& names, const std::string& value) {
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == value) return static_cast<E>(i);
-  throw std::logic_error("post-processing parameter not validated: " + value);
+const ChoiceTable<SmoothingMode>& smoothing_modes() {
+  static const ChoiceTable<SmoothingMode> table = {{"none", SmoothingMode::none},
+                                                   {"bezier", SmoothingMode::bezier},
+                                                   {"bspline", SmoothingMode::bspline}};
+  return table;
 }
 
 }  // namespace
 
-std::vector<ParamSpec> shortcut_params(ShortcutMode default_mode) {
-  return {
-      ParamSpec::choice(
-          "shortcut", shortcut_names()[static_cast<std::size_t>(default_mode)], shortcut_names(),
-          "path shortcut after the search: none; collinear (drop straight-through nodes); "
-          "turning_points (paper 000 step 3: drop a turning point whose neighbours see each "
-          "other, repeated); greedy (jump to the farthest node in sight); forward (paper 002: "
-          "midpoints inserted, then forward key-point search); from_goal (paper 004: greedy from "
-          "the goal); direct_midpoint (paper 003: direct, else midpoint shortcut). Never longer "
-          "than the search path"),
-      ParamSpec::number("shortcut_margin", 0.0, 0.0, 10.0,
-                        "clearance the shortcut segments keep, in cells: every obstacle centre "
-                        "at least margin + 0.5 away (0 = the segment touches no obstacle cell)"),
-  };
+ParamDecls<PostprocessOptions> shortcut_decls(ShortcutMode default_mode) {
+  ParamDecls<PostprocessOptions> d;
+  d.choice("shortcut", &PostprocessOptions::shortcut, default_mode, shortcut_modes(),
+           "path shortcut after the search: none; collinear (drop straight-through nodes); "
+           "turning_points (paper 000 step 3: drop a turning point whose neighbours see each "
+           "other, repeated); greedy (jump to the farthest node in sight); forward (paper 002: "
+           "midpoints inserted, then forward key-point search); from_goal (paper 004: greedy from "
+           "the goal); direct_midpoint (paper 003: direct, else midpoint shortcut). Never longer "
+           "than the search path");
+  return d.include([](PostprocessOptions& o) -> PostprocessOptions& { return o; },
+                   shortcut_margin_decls(0.0));
 }
 
-std::vector<ParamSpec> smoothing_params(SmoothingMode default_mode) {
-  return {
-      ParamSpec::choice("smoothing", smoothing_names()[static_cast<std::size_t>(default_mode)],
-                        smoothing_names(),
-                        "curve fitting after the shortcut: none; bezier (paper 002 eq. 14: a "
-                        "quadratic Bezier at each corner, shrunk on collision); bspline (paper "
-                        "004: clamped cubic uniform B-spline through the nodes as control "
-                        "points, refitted on collision). Output: the curve's samples"),
-      ParamSpec::number("curve_step", 0.1, 0.01, 1.0,
-                        "B-spline sample spacing in cells (the curve is returned as samples)"),
-      ParamSpec::number("bezier_distance", 1.0, 0.05, 10.0,
-                        "Bezier: distance L of the control points P0, P2 from the corner, cells "
-                        "(clamped to half of each adjacent segment; paper 002: one cell)"),
-      ParamSpec::integer("bezier_points", 10, 2, 1000,
-                         "Bezier: samples per corner curve, its two ends included"),
-  };
+ParamDecls<PostprocessOptions> shortcut_margin_decls(double default_margin) {
+  ParamDecls<PostprocessOptions> d;
+  d.number("shortcut_margin", &PostprocessOptions::shortcut_margin, default_margin, 0.0, 10.0,
+           "clearance the shortcut segments keep, in cells: every obstacle centre at least "
+           "margin + 0.5 away (0 = the segment touches no obstacle cell)");
+  return d;
 }
 
-void read_shortcut_params(const Params& params, PostprocessOptions& options) {
-  options.shortcut = enum_of<ShortcutMode>(shortcut_names(), params.choice("shortcut"));
-  options.shortcut_margin = params.number("shortcut_margin");
-}
-
-void read_smoothing_params(const Params& params, PostprocessOptions& options) {
-  options.smoothing = enum_of<SmoothingMode>(smoothing_names(), params.choice("smoothing"));
-  options.bspline.sample_step = params.number("curve_step");
-  options.bezier.corner_distance = params.number("bezier_distance");
-  options.bezier.points_per_curve = static_cast<int>(params.integer("bezier_points"));
+ParamDecls<PostprocessOptions> smoothing_decls(SmoothingMode default_mode) {
+  ParamDecls<PostprocessOptions> d;
+  d.choice("smoothing", &PostprocessOptions::smoothing, default_mode, smoothing_modes(),
+           "curve fitting after the shortcut: none; bezier (paper 002 eq. 14: a quadratic Bezier "
+           "at each corner, shrunk on collision); bspline (paper 004: clamped cubic uniform "
+           "B-spline through the nodes as control points, refitted on collision). Output: the "
+           "curve's samples")
+      .number(
+          "curve_step", [](PostprocessOptions& o) -> double& { return o.bspline.sample_step; }, 0.1,
+          0.01, 1.0, "B-spline sample spacing in cells (the curve is returned as samples)")
+      .number(
+          "bezier_distance",
+          [](PostprocessOptions& o) -> double& { return o.bezier.corner_distance; }, 1.0, 0.05,
+          10.0,
+          "Bezier: distance L of the control points P0, P2 from the corner, cells (clamped to "
+          "half of each adjacent segment; paper 002: one cell)")
+      .integer(
+          "bezier_points", [](PostprocessOptions& o) -> int& { return o.bezier.points_per_curve; },
+          10, 2, 1000, "Bezier: samples per corner curve, its two ends included");
+  return d;
 }
 
 SightRule sight_rule(CornerRule rule, double margin) {
@@ -165,12 +164,17 @@ void finish_path(const Grid& grid, const PostprocessOptions& options, WorkingPat
 }
 
 void apply_postprocessing(const Grid& grid, const PostprocessOptions& options, PlanResult& result) {
+  apply_postprocessing(grid, options, sight_rule(result.rule, options.shortcut_margin), result);
+}
+
+void apply_postprocessing(const Grid& grid, const PostprocessOptions& options,
+                          const SightRule& shortcut_sight, PlanResult& result) {
   if (!result.ok()) return;
   if (options.shortcut == ShortcutMode::none && options.smoothing == SmoothingMode::none) return;
   WorkingPath path(std::move(result.path));
   if (options.shortcut != ShortcutMode::none) {
     PhaseTimer timer(result, "postprocess");
-    apply_shortcut(grid, options.shortcut, sight_rule(result.rule, options.shortcut_margin), path);
+    apply_shortcut(grid, options.shortcut, shortcut_sight, path);
   }
   finish_path(grid, options, path, result);
 }

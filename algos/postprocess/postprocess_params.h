@@ -1,8 +1,8 @@
 #pragma once
 // Post-processing any grid planner can apply through its parameters (issue 3), so a user can run
 // classic A* + B-spline as easily as the papers' own pipelines. The steps themselves live in
-// algos/postprocess/path_simplify.h and algos/postprocess/path_curves.h (one implementation each); this file only names
-// them as parameters and chains them:
+// algos/postprocess/path_simplify.h and algos/postprocess/path_curves.h (one implementation each);
+// this file only names them as parameters and chains them:
 //
 //   search path (cell centres) -> shortcut (`shortcut`, under `shortcut_margin`)
 //                              -> smoothing (`smoothing`: none | bezier | bspline)
@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "core/line_of_sight.h"
-#include "core/params.h"
-#include "algos/postprocess/path_curves.h"
 #include "algos/planner.h"
+#include "algos/postprocess/path_curves.h"
 #include "core/corner_rule.h"
 #include "core/grid.h"
+#include "core/line_of_sight.h"
+#include "core/params.h"
 
 namespace agv {
 
@@ -41,13 +41,13 @@ struct PostprocessOptions {
   BsplineOptions bspline;
 };
 
-// `shortcut`, `shortcut_margin`.
-std::vector<ParamSpec> shortcut_params(ShortcutMode default_mode);
+// `shortcut`, then `shortcut_margin` (default 0).
+ParamDecls<PostprocessOptions> shortcut_decls(ShortcutMode default_mode);
+// `shortcut_margin` alone, for a variant whose paper fixes the shortcut mode (alt_astar: 0,
+// kin_astar: 1, paper 004's one-cell safety distance) and keeps only its clearance a parameter.
+ParamDecls<PostprocessOptions> shortcut_margin_decls(double default_margin);
 // `smoothing`, `curve_step`, `bezier_distance`, `bezier_points`.
-std::vector<ParamSpec> smoothing_params(SmoothingMode default_mode);
-// Read back what the specs above declared (each reader only the names it declares).
-void read_shortcut_params(const Params& params, PostprocessOptions& options);
-void read_smoothing_params(const Params& params, PostprocessOptions& options);
+ParamDecls<PostprocessOptions> smoothing_decls(SmoothingMode default_mode);
 
 // The collision rule of a step: cells under the corner rule, or that plus a margin in cells.
 SightRule sight_rule(CornerRule rule, double margin);
@@ -80,7 +80,11 @@ void finish_path(const Grid& grid, const PostprocessOptions& options, WorkingPat
 
 // Both steps on a successful search result, under its corner rule, timed as the phases
 // "postprocess" (shortcut) and "smoothing"; a failed result, or options that ask for nothing,
-// leave the result alone.
+// leave the result alone. The shortcut tests sight under sight_rule(rule, shortcut_margin).
 void apply_postprocessing(const Grid& grid, const PostprocessOptions& options, PlanResult& result);
+// The same with the shortcut's sight test given: a paper's own clearance rule (MA*'s obstacle
+// circles of radius r_obs, paper 000 eq. 5.1b). The smoothing still tests under the cells rule.
+void apply_postprocessing(const Grid& grid, const PostprocessOptions& options,
+                          const SightRule& shortcut_sight, PlanResult& result);
 
 }  // namespace agv

@@ -3,13 +3,14 @@
 // Bidirectional A*: a forward search from the start (h = distance to the goal) and a backward
 // search from the goal (h = distance to the start) alternate one expansion each.
 //
-// Why it is not a Policy of the one search core (algos/search/search_core.h): the core owns ONE open
-// list and stops when it pops the goal; a policy can change the key, the cost, the heuristic and
-// the move set, not the number of frontiers or the stopping rule. Here two frontiers interleave,
-// every relaxation may update the best meeting cost mu across them, and the search stops on a
-// test over both list tops. So this file has its own small loop, built from the same parts: the
-// open list (algos/search/open_list.h, same key packing and tie rule), GridSearchBuffers (one per
-// direction), and the corner rule's move table (core/corner_rule.h).
+// Why it is not a plain Policy of grid_search() (algos/search/search_core.h): that loop owns ONE
+// open list and stops when it pops the goal; a policy can change the key, the cost, the
+// heuristic and the move set, not the number of frontiers or the stopping rule. Here two
+// frontiers interleave, every relaxation may update the best meeting cost mu across them, and
+// the search stops on a test over both list tops. So this file has its own small loop over two
+// SearchFrontiers (one GridSearchBuffers per direction), and each expansion is the core's own
+// GridExpander::expand() with an AStarPolicy towards the other side's source; a listener on the
+// relaxations updates mu.
 //
 // Termination (front-to-end bidirectional A* with a consistent heuristic): mu = min over cells
 // labelled by both searches of g_forward + g_backward, updated whenever either search sets a g.
@@ -28,8 +29,8 @@
 #include <memory>
 #include <vector>
 
-#include "algos/search/grid_search_params.h"
 #include "algos/postprocess/postprocess_params.h"
+#include "algos/search/grid_search_params.h"
 #include "algos/search/search_core.h"
 
 namespace agv {
@@ -47,54 +48,46 @@ struct BidirOutcome {
   int meet = -1;  // padded index of the meeting cell
 };
 
+// Sees one direction's relaxations: a child also labelled by the other direction is a meeting
+// cell; mu keeps the cheapest.
+struct MeetingListener {
+  void generated(int /*index*/) {}
+  void expanded(int /*index*/, double /*g*/) {}
+  void relaxed(int index, double g, double /*key*/) {
+    if (!other->labelled(index)) return;
+    const double through = g + other->nodes[index].g;
+    if (through < *mu) {
+      *mu = through;
+      *meet = index;
+    }
+  }
+  const SearchFrontier* other;
+  double* mu;
+  int* meet;
+};
+
 template <class H>
 BidirOutcome bidir_search(const Grid& grid, Cell start, Cell goal, const GridSearchSetup& setup,
                           const Deadline& deadline, H h_fn, BidirBuffers& buffers) {
   using open_key::index_of;
-  using open_key::pack;
-  const int stride = grid.stride();
-  const std::uint8_t* occ = grid.occupancy();
-  const MoveTable& moves = move_table(setup.rule);
-  int offset[8];
-  double step[8];
-  for (int d = 0; d < 8; ++d) {
-    offset[d] = kDy[d] * stride + kDx[d];
-    step[d] = is_diagonal(d) ? setup.diagonal_cost : 1.0;
-  }
-  struct Side {
-    std::uint8_t* stamp;
-    SearchNode* nodes;
-    OpenList* open;
-    std::uint8_t open_stamp;
-    std::uint8_t closed_stamp;
-    Cell target;
-  };
-  Side sides[2];
-  const Cell sources[2] = {start, goal};
-  for (int s = 0; s < 2; ++s) {
-    GridSearchBuffers& b = buffers.side[s];
-    b.begin(grid.padded_size());
-    sides[s] = {b.stamps(), b.nodes(), &b.open(), b.open_stamp(), b.closed_stamp(),
-                sources[1 - s]};
-    sides[s].open->reset(sides[s].nodes);
-  }
-  auto h_of = [&](const Side& side, int x, int y) {
-    return h_fn(std::abs(side.target.x - x), std::abs(side.target.y - y));
-  };
-  auto f_of = [&](const Side& side, int index) {
+  const GridExpander expander(grid, setup);
+  for (GridSearchBuffers& b : buffers.side) b.begin(grid.padded_size());
+  SearchFrontier sides[2] = {SearchFrontier(buffers.side[0]), SearchFrontier(buffers.side[1])};
+  // Forward towards the goal, backward towards the start.
+  const AStarPolicy<H> policies[2] = {AStarPolicy<H>(h_fn, goal), AStarPolicy<H>(h_fn, start)};
+  auto f_of = [&](int s, int index) {
     const Cell c = grid.cell_of(index);
-    return side.nodes[index].g + h_of(side, c.x, c.y);
+    return sides[s].nodes[index].g + policies[s].heuristic(c.x, c.y, index);
   };
 
   BidirOutcome out;
   double mu = std::numeric_limits<double>::infinity();
+  MeetingListener listeners[2] = {{&sides[1], &mu, &out.meet}, {&sides[0], &mu, &out.meet}};
+  const Cell sources[2] = {start, goal};
   for (int s = 0; s < 2; ++s) {
-    Side& side = sides[s];
     const int source = grid.index(sources[s]);
-    side.stamp[source] = side.open_stamp;
-    side.nodes[source].g = 0.0;
-    side.nodes[source].parent_dir = static_cast<std::uint8_t>(kNoDirection);
-    side.open->push(pack(h_of(side, sources[s].x, sources[s].y), 0.0, source));
+    sides[s].push_source(source, policies[s].heuristic(sources[s].x, sources[s].y, source),
+                         listeners[s]);
   }
   if (start == goal) {
     out.meet = grid.index(start);
@@ -103,52 +96,20 @@ BidirOutcome bidir_search(const Grid& grid, Cell start, Cell goal, const GridSea
 
   int s = 0;
   for (;;) {
-    Side& side = sides[s];
-    Side& other = sides[1 - s];
+    SearchFrontier& side = sides[s];
+    SearchFrontier& other = sides[1 - s];
     // A list that ran empty has labelled everything reachable from its source: mu is final.
-    if (side.open->empty() || other.open->empty()) break;
+    if (side.open.empty() || other.open.empty()) break;
     // Stopping test: either list's min f bounds every path not yet found from below.
-    if (f_of(side, index_of(side.open->top())) >= mu || f_of(other, index_of(other.open->top())) >= mu)
+    if (f_of(s, index_of(side.open.top())) >= mu || f_of(1 - s, index_of(other.open.top())) >= mu)
       break;
     if ((out.expanded & (kDeadlineInterval - 1)) == 0 && deadline.expired()) {
       out.failure = Failure::limit;
       return out;
     }
-    const int i = index_of(side.open->pop());
-    side.stamp[i] = side.closed_stamp;
+    const int i = side.pop_and_close();
     ++out.expanded;
-    const double g = side.nodes[i].g;
-    unsigned free_mask = 0;
-    for (int d = 0; d < 8; ++d) free_mask |= static_cast<unsigned>(occ[i + offset[d]] == 0) << d;
-    unsigned allowed = moves[free_mask];
-    const Cell here = grid.cell_of(i);
-    while (allowed != 0) {
-      const int d = std::countr_zero(allowed);
-      allowed &= allowed - 1;
-      const int c = i + offset[d];
-      const std::uint8_t seen = side.stamp[c];
-      if (seen == side.closed_stamp) continue;
-      const double child_g = g + step[d];
-      SearchNode& child = side.nodes[c];
-      if (seen == side.open_stamp && !(child_g < child.g)) continue;
-      child.g = child_g;
-      child.parent_dir = static_cast<std::uint8_t>(d);
-      const double key = child_g + h_of(side, here.x + kDx[d], here.y + kDy[d]);
-      if (seen == side.open_stamp) {
-        side.open->update(pack(key, child_g, c));
-      } else {
-        side.stamp[c] = side.open_stamp;
-        side.open->push(pack(key, child_g, c));
-      }
-      const std::uint8_t other_seen = other.stamp[c];
-      if (other_seen == other.open_stamp || other_seen == other.closed_stamp) {
-        const double through = child_g + other.nodes[c].g;
-        if (through < mu) {
-          mu = through;
-          out.meet = c;
-        }
-      }
-    }
+    expander.expand(i, side.nodes[i].g, policies[s], side, listeners[s]);
     s = 1 - s;  // strict alternation
   }
   if (out.meet < 0) out.failure = Failure::no_path;
@@ -177,24 +138,34 @@ void trace_meeting(const Grid& grid, const BidirBuffers& buffers, int meet,
   }
 }
 
+struct BidirOptions {
+  GridSearchOptions search;
+  PostprocessOptions post;  // smoothing only
+};
+
+ParamDecls<BidirOptions> bidir_decls() {
+  ParamDecls<BidirOptions> d;
+  d.include(&BidirOptions::search, grid_search_decls(CornerRule::allow, Heuristic::octile))
+      .include(&BidirOptions::post, smoothing_decls(SmoothingMode::none));
+  return d;
+}
+
 class BidirAStarPlanner final : public Planner {
  public:
-  explicit BidirAStarPlanner(const Params& params)
-      : setup_(grid_search_setup_of(params)), heuristic_(heuristic_of(params)) {
-    read_smoothing_params(params, post_);
-  }
+  explicit BidirAStarPlanner(const BidirOptions& options) : o_(options) {}
 
   PlanResult plan(const PlanRequest& request) const override {
-    if (auto bad = check_grid_query(request, setup_.rule)) return std::move(*bad);
+    if (auto bad = check_grid_query(request, o_.search.setup.rule)) return std::move(*bad);
     PlanResult result;
-    result.rule = setup_.rule;
+    result.rule = o_.search.setup.rule;
     auto& buffers = request.scratch.get<BidirBuffers>();
     {
       PhaseTimer timer(result, "search");
-      const BidirOutcome out = with_heuristic(heuristic_, setup_.diagonal_cost, [&](auto h) {
-        return bidir_search(request.grid, request.start, request.goal, setup_, request.deadline,
-                            h, buffers);
-      });
+      const BidirOutcome out =
+          with_heuristic(o_.search.heuristic, o_.search.setup.diagonal_cost, [&](auto h) {
+            return bidir_search(request.grid, request.start, request.goal, o_.search.setup,
+                                request.deadline, h, buffers);
+          });
       result.expanded_nodes = out.expanded;
       if (out.failure == Failure::none) {
         trace_meeting(request.grid, buffers, out.meet, buffers.cells);
@@ -206,14 +177,12 @@ class BidirAStarPlanner final : public Planner {
                                                        : "the goal is unreachable from the start";
       }
     }
-    apply_postprocessing(request.grid, post_, result);
+    apply_postprocessing(request.grid, o_.post, result);
     return result;
   }
 
  private:
-  GridSearchSetup setup_;
-  Heuristic heuristic_;
-  PostprocessOptions post_;
+  BidirOptions o_;
 };
 
 }  // namespace
@@ -221,16 +190,15 @@ class BidirAStarPlanner final : public Planner {
 PlannerInfo bidir_astar_planner() {
   PlannerInfo info;
   info.name = "bidir_astar";
-  info.summary = "bidirectional A*: forward and backward searches alternate, stop when either "
-                 "list's min f reaches the best meeting cost; optimal";
+  info.summary =
+      "bidirectional A*: forward and backward searches alternate, stop when either "
+      "list's min f reaches the best meeting cost; optimal";
   info.source = "paper 002 baseline; PLANNERS.md Dijkstra, bidirectional A*";
   info.expanded_nodes_meaning =
       "cells taken off either open list and closed (forward and backward counted separately)";
-  info.params = {corner_rule_param(CornerRule::allow), heuristic_param(Heuristic::octile),
-                 diagonal_cost_param()};
-  for (auto& spec : smoothing_params(SmoothingMode::none)) info.params.push_back(std::move(spec));
+  info.params = bidir_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
-    return std::make_unique<BidirAStarPlanner>(params);
+    return std::make_unique<BidirAStarPlanner>(bidir_decls().read(params));
   };
   return info;
 }

@@ -2,8 +2,8 @@
 
 #include <memory>
 
-#include "algos/search/grid_search_params.h"
 #include "algos/postprocess/postprocess_params.h"
+#include "algos/search/grid_search_params.h"
 #include "algos/search/heuristics.h"
 #include "algos/search/search_core.h"
 
@@ -11,23 +11,32 @@ namespace agv {
 
 namespace {
 
+struct DijkstraOptions {
+  GridSearchOptions search;
+  PostprocessOptions post;
+};
+
+ParamDecls<DijkstraOptions> dijkstra_decls() {
+  ParamDecls<DijkstraOptions> d;
+  d.include(&DijkstraOptions::search, grid_search_decls(CornerRule::allow, std::nullopt))
+      .include(&DijkstraOptions::post, shortcut_decls(ShortcutMode::none))
+      .include(&DijkstraOptions::post, smoothing_decls(SmoothingMode::none));
+  return d;
+}
+
 class DijkstraPlanner final : public Planner {
  public:
-  explicit DijkstraPlanner(const Params& params) : setup_(grid_search_setup_of(params)) {
-    read_shortcut_params(params, post_);
-    read_smoothing_params(params, post_);
-  }
+  explicit DijkstraPlanner(const DijkstraOptions& options) : o_(options) {}
 
   PlanResult plan(const PlanRequest& request) const override {
-    PlanResult result = plan_grid_search(request, setup_,
+    PlanResult result = plan_grid_search(request, o_.search.setup,
                                          AStarPolicy<ZeroHeuristic>(ZeroHeuristic{}, request.goal));
-    apply_postprocessing(request.grid, post_, result);
+    apply_postprocessing(request.grid, o_.post, result);
     return result;
   }
 
  private:
-  GridSearchSetup setup_;
-  PostprocessOptions post_;
+  DijkstraOptions o_;
 };
 
 }  // namespace
@@ -39,11 +48,9 @@ PlannerInfo dijkstra_planner() {
   info.source = "PLANNERS.md Dijkstra; paper 002 baseline";
   info.expanded_nodes_meaning =
       "cells taken off the open list and closed (goal included; stale duplicates not counted)";
-  info.params = {corner_rule_param(CornerRule::allow), diagonal_cost_param()};
-  for (auto& spec : shortcut_params(ShortcutMode::none)) info.params.push_back(std::move(spec));
-  for (auto& spec : smoothing_params(SmoothingMode::none)) info.params.push_back(std::move(spec));
+  info.params = dijkstra_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
-    return std::make_unique<DijkstraPlanner>(params);
+    return std::make_unique<DijkstraPlanner>(dijkstra_decls().read(params));
   };
   return info;
 }

@@ -19,10 +19,9 @@
 
 #include <memory>
 
-#include "algos/search/grid_search_params.h"
 #include "algos/postprocess/path_curves.h"
-#include "algos/postprocess/path_simplify.h"
 #include "algos/postprocess/postprocess_params.h"
+#include "algos/search/grid_search_params.h"
 #include "algos/search/search_core.h"
 
 namespace agv {
@@ -47,71 +46,83 @@ struct TurnWeightedPolicy : PolicyDefaults {
   double turn_weight;
 };
 
+struct ImprovedAStarOptions {
+  GridSearchOptions search;
+  double turn_weight = 1.2;
+  double avoid_offset = 0.5;
+  double avoid_near = 1.0;
+  PostprocessOptions post;  // the smoothing (step 4)
+};
+
+ParamDecls<ImprovedAStarOptions> internal_decls() {
+  ParamDecls<ImprovedAStarOptions> d;
+  d.include(&ImprovedAStarOptions::search,
+            grid_search_decls(CornerRule::no_squeeze, Heuristic::octile, 1.4))
+      .number("turn_weight", &ImprovedAStarOptions::turn_weight, 1.2, 1.0, 10.0,
+              "C of eq. 9-10: the heuristic's weight when parent -> node -> child turns (1 = no "
+              "turning cost)");
+  return d;
+}
+
+ParamDecls<ImprovedAStarOptions> improved_internal_decls() {
+  ParamDecls<ImprovedAStarOptions> d = internal_decls();
+  d.include(&ImprovedAStarOptions::post, smoothing_decls(SmoothingMode::none));
+  return d;
+}
+
+ParamDecls<ImprovedAStarOptions> improved_decls() {
+  ParamDecls<ImprovedAStarOptions> d = internal_decls();
+  d.number("avoid_offset", &ImprovedAStarOptions::avoid_offset, 0.5, 0.0, 2.0,
+           "eq. 13: how far key points are pushed from nearby obstacles, cells (L/2)")
+      .number("avoid_near", &ImprovedAStarOptions::avoid_near, 1.0, 0.0, 3.0,
+              "section 4.2 step 3: a segment passing closer than this to an obstacle centre gets "
+              "a point inserted at that obstacle's pushed vertex, cells (L)")
+      .include(&ImprovedAStarOptions::post, smoothing_decls(SmoothingMode::bezier));
+  return d;
+}
+
 class ImprovedAStarPlanner final : public Planner {
  public:
-  ImprovedAStarPlanner(const Params& params, bool external)
-      : setup_(grid_search_setup_of(params)),
-        heuristic_(heuristic_of(params)),
-        turn_weight_(params.number("turn_weight")),
-        external_(external) {
-    read_smoothing_params(params, post_);
-    if (external_) {
-      avoid_offset_ = params.number("avoid_offset");
-      avoid_near_ = params.number("avoid_near");
-    }
-  }
+  ImprovedAStarPlanner(const ImprovedAStarOptions& options, bool external)
+      : o_(options), external_(external) {}
 
   PlanResult plan(const PlanRequest& request) const override {
-    PlanResult result = with_heuristic(heuristic_, setup_.diagonal_cost, [&](auto h) {
-      return plan_grid_search(
-          request, setup_, TurnWeightedPolicy<decltype(h)>(h, request.goal, turn_weight_));
-    });
+    PlanResult result =
+        with_heuristic(o_.search.heuristic, o_.search.setup.diagonal_cost, [&](auto h) {
+          return plan_grid_search(request, o_.search.setup,
+                                  TurnWeightedPolicy<decltype(h)>(h, request.goal, o_.turn_weight));
+        });
     if (!result.ok()) return result;
     WorkingPath path(std::move(result.path));
     if (external_) {
       PhaseTimer timer(result, "postprocess");
-      const SightRule sight = SightRule::cells(setup_.rule);
-      std::vector<Point> refined = path.points;
-      insert_midpoints(refined);                                                // step 1
-      std::vector<Point> keys = select_points(refined, forward_keep(request.grid, refined, sight));
-      avoid_obstacles(request.grid, keys, sight, avoid_offset_, avoid_near_);  // eq. 12-13
-      path.replace(std::move(keys));
+      const SightRule sight = SightRule::cells(o_.search.setup.rule);
+      apply_shortcut(request.grid, ShortcutMode::forward, sight, path);  // steps 1-2
+      // Step 3 (eq. 12-13), paper 002's own: it moves and inserts points.
+      avoid_obstacles(request.grid, path.points, sight, o_.avoid_offset, o_.avoid_near);
     }
-    finish_path(request.grid, post_, path, result);  // step 4: Bezier corners
+    finish_path(request.grid, o_.post, path, result);  // step 4: Bezier corners
     return result;
   }
 
  private:
-  GridSearchSetup setup_;
-  Heuristic heuristic_;
-  double turn_weight_;
+  ImprovedAStarOptions o_;
   bool external_;
-  double avoid_offset_ = 0.5;
-  double avoid_near_ = 1.0;
-  PostprocessOptions post_;
 };
-
-std::vector<ParamSpec> internal_params() {
-  return {corner_rule_param(CornerRule::no_squeeze), heuristic_param(Heuristic::octile),
-          diagonal_cost_param(1.4),
-          ParamSpec::number("turn_weight", 1.2, 1.0, 10.0,
-                            "C of eq. 9-10: the heuristic's weight when parent -> node -> child "
-                            "turns (1 = no turning cost)")};
-}
 
 }  // namespace
 
 PlannerInfo improved_astar_internal_planner() {
   PlannerInfo info;
   info.name = "improved_astar_internal";
-  info.summary = "paper 002 internal improved A*: no_squeeze, octile (D_diag 1.4), turning "
-                 "weight 1.2";
+  info.summary =
+      "paper 002 internal improved A*: no_squeeze, octile (D_diag 1.4), turning "
+      "weight 1.2";
   info.source = "paper 002 section 4.1 (Algorithm 1, eq. 6-10), Table 4; PLANNERS.md";
   info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
-  info.params = internal_params();
-  for (auto& spec : smoothing_params(SmoothingMode::none)) info.params.push_back(std::move(spec));
+  info.params = improved_internal_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
-    return std::make_unique<ImprovedAStarPlanner>(params, false);
+    return std::make_unique<ImprovedAStarPlanner>(improved_internal_decls().read(params), false);
   };
   return info;
 }
@@ -119,21 +130,14 @@ PlannerInfo improved_astar_internal_planner() {
 PlannerInfo improved_astar_planner() {
   PlannerInfo info;
   info.name = "improved_astar";
-  info.summary = "paper 002 improved A*: the internal search, then midpoints, forward key "
-                 "points, obstacle-avoidance adjustment and quadratic Bezier corners";
+  info.summary =
+      "paper 002 improved A*: the internal search, then midpoints, forward key "
+      "points, obstacle-avoidance adjustment and quadratic Bezier corners";
   info.source = "paper 002 sections 4.1-4.2 (Algorithms 1-2, eq. 6-14), Table 5; PLANNERS.md";
   info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
-  info.params = internal_params();
-  info.params.push_back(ParamSpec::number(
-      "avoid_offset", 0.5, 0.0, 2.0,
-      "eq. 13: how far key points are pushed from nearby obstacles, cells (L/2)"));
-  info.params.push_back(ParamSpec::number(
-      "avoid_near", 1.0, 0.0, 3.0,
-      "section 4.2 step 3: a segment passing closer than this to an obstacle centre gets a point "
-      "inserted at that obstacle's pushed vertex, cells (L)"));
-  for (auto& spec : smoothing_params(SmoothingMode::bezier)) info.params.push_back(std::move(spec));
+  info.params = improved_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
-    return std::make_unique<ImprovedAStarPlanner>(params, true);
+    return std::make_unique<ImprovedAStarPlanner>(improved_decls().read(params), true);
   };
   return info;
 }

@@ -9,20 +9,21 @@
 //   goal, R = start-goal distance (`weight_base` = the 1.5);
 // - child nodes: `corner_rule: no_corner_cut`;
 // - secondary redundancy removal (section 2.3): greedy from the goal backwards, each node joined
-//   to the earliest node it sees under SightRule::margin(d_safe) (obstacle centres at least
-//   d_safe + 0.5 from the segment; paper: the safety distance is one cell edge);
+//   to the earliest node it sees under SightRule::margin(shortcut_margin) (obstacle centres at
+//   least shortcut_margin + 0.5 from the segment; paper: the safety distance is one cell edge):
+//   the pipeline's `from_goal` shortcut;
 // - clamped cubic uniform B-spline (section 2.4, appendix A), the remaining nodes as control
 //   points, refitted by re-inserting removed cells where it would hit (`smoothing: bspline`).
 // expanded_nodes: cells taken off the open list and closed (the goal included). Extra metric
-// generated_nodes: cells put on the open list (the paper's "searched child nodes").
+// generated_nodes: cells put on the open list (the paper's "searched child nodes"), counted by
+// the search listener.
 
 #include <array>
 #include <cmath>
 #include <memory>
 
-#include "algos/search/grid_search_params.h"
-#include "algos/postprocess/path_simplify.h"
 #include "algos/postprocess/postprocess_params.h"
+#include "algos/search/grid_search_params.h"
 #include "algos/search/search_core.h"
 
 namespace agv {
@@ -64,56 +65,65 @@ struct KinAStarPolicy : PolicyDefaults {
   bool five = true;
 };
 
-// Cells the last search put on the open list (open or closed when it stopped): the "searched
+// Counts the cells the search puts on the open list, the source included: the "searched
 // children" of paper 004's Figure 6 (gray cells), which the five-direction rule reduces.
-std::int64_t seen_cells(const PlanRequest& request) {
-  GridSearchBuffers& buffers = request.scratch.get<GridSearchBuffers>();
-  const std::uint8_t* stamp = buffers.stamps();
-  const std::uint8_t open = buffers.open_stamp(), closed = buffers.closed_stamp();
-  std::int64_t seen = 0;
-  for (int i = 0; i < request.grid.padded_size(); ++i)
-    seen += (stamp[i] == open || stamp[i] == closed) ? 1 : 0;
-  return seen;
+struct GeneratedCounter {
+  void generated(int /*index*/) { ++count; }
+  void expanded(int /*index*/, double /*g*/) {}
+  void relaxed(int /*index*/, double /*g*/, double /*key*/) {}
+  std::int64_t count = 0;
+};
+
+enum class Directions { five, eight };
+
+struct KinAStarOptions {
+  GridSearchOptions search;
+  Directions directions = Directions::five;
+  double weight_base = 1.5;
+  PostprocessOptions post;  // section 2.3: from_goal under shortcut_margin; 2.4: smoothing
+};
+
+ParamDecls<KinAStarOptions> kin_astar_decls() {
+  ParamDecls<KinAStarOptions> d;
+  d.include(&KinAStarOptions::search, grid_search_decls(CornerRule::no_corner_cut, std::nullopt))
+      .choice("directions", &KinAStarOptions::directions, Directions::five,
+              ChoiceTable<Directions>{{"five", Directions::five}, {"eight", Directions::eight}},
+              "five = Table 1's five directions toward the goal where the 3x3 neighbourhood is "
+              "free (all 8 elsewhere); eight = always all 8")
+      .number("weight_base", &KinAStarOptions::weight_base, 1.5, 0.0, 10.0,
+              "the 1.5 of f = g + (1.5 + r/R) h (section 2.2)")
+      // Paper 004: the safety distance is one cell edge.
+      .include(&KinAStarOptions::post, shortcut_margin_decls(1.0))
+      .include(&KinAStarOptions::post, smoothing_decls(SmoothingMode::bspline));
+  return d;
 }
 
 class KinAStarPlanner final : public Planner {
  public:
-  explicit KinAStarPlanner(const Params& params)
-      : setup_(grid_search_setup_of(params)),
-        five_(params.choice("directions") == "five"),
-        weight_base_(params.number("weight_base")),
-        d_safe_(params.number("d_safe")) {
-    read_smoothing_params(params, post_);
+  explicit KinAStarPlanner(const KinAStarOptions& options) : o_(options) {
+    o_.post.shortcut = ShortcutMode::from_goal;  // section 2.3
   }
 
   PlanResult plan(const PlanRequest& request) const override {
     KinAStarPolicy policy;
     policy.goal_cell = request.goal;
-    policy.weight_base = weight_base_;
-    policy.five = five_;
+    policy.weight_base = o_.weight_base;
+    policy.five = o_.directions == Directions::five;
     const double big_r = std::hypot(static_cast<double>(request.goal.x - request.start.x),
                                     static_cast<double>(request.goal.y - request.start.y));
     policy.inverse_R = big_r > 0.0 ? 1.0 / big_r : 0.0;
-    PlanResult result = plan_grid_search(request, setup_, policy);
+    GeneratedCounter generated;
+    PlanResult result = plan_grid_search(request, o_.search.setup, policy, generated);
     if (result.failure != Failure::invalid_input)
-      result.extra.emplace_back("generated_nodes", static_cast<double>(seen_cells(request)));
-    if (!result.ok()) return result;
-    WorkingPath path(std::move(result.path));
-    {
-      PhaseTimer timer(result, "postprocess");  // section 2.3
-      path.keep(greedy_keep(request.grid, path.points, SightRule::margin(d_safe_, setup_.rule),
-                            /*from_goal=*/true));
-    }
-    finish_path(request.grid, post_, path, result);  // section 2.4: B-spline
+      result.extra.emplace_back("generated_nodes", static_cast<double>(generated.count));
+    // Section 2.3, then 2.4 (B-spline). The safety distance is a margin test even at 0.
+    apply_postprocessing(request.grid, o_.post,
+                         SightRule::margin(o_.post.shortcut_margin, o_.search.setup.rule), result);
     return result;
   }
 
  private:
-  GridSearchSetup setup_;
-  bool five_;
-  double weight_base_;
-  double d_safe_;
-  PostprocessOptions post_;
+  KinAStarOptions o_;
 };
 
 }  // namespace
@@ -134,26 +144,15 @@ std::uint8_t five_direction_mask(int dx, int dy) {
 PlannerInfo kin_astar_planner() {
   PlannerInfo info;
   info.name = "kin_astar";
-  info.summary = "paper 004 kinematic-constraint A*: five-direction search in open areas, "
-                 "weighted heuristic (1.5 + r/R), redundancy removal with a safety distance, "
-                 "clamped cubic B-spline";
+  info.summary =
+      "paper 004 kinematic-constraint A*: five-direction search in open areas, "
+      "weighted heuristic (1.5 + r/R), redundancy removal with a safety distance, "
+      "clamped cubic B-spline";
   info.source = "paper 004 section 2 (eq. 1, Table 1, appendix A); PLANNERS.md";
   info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
-  info.params = {
-      corner_rule_param(CornerRule::no_corner_cut),
-      diagonal_cost_param(),
-      ParamSpec::choice("directions", "five", {"five", "eight"},
-                        "five = Table 1's five directions toward the goal where the 3x3 "
-                        "neighbourhood is free (all 8 elsewhere); eight = always all 8"),
-      ParamSpec::number("weight_base", 1.5, 0.0, 10.0,
-                        "the 1.5 of f = g + (1.5 + r/R) h (section 2.2)"),
-      ParamSpec::number("d_safe", 1.0, 0.0, 5.0,
-                        "safety distance of the redundancy removal, cells: obstacle centres at "
-                        "least d_safe + 0.5 from a shortcut segment (paper: one cell edge)"),
-  };
-  for (auto& spec : smoothing_params(SmoothingMode::bspline)) info.params.push_back(std::move(spec));
+  info.params = kin_astar_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
-    return std::make_unique<KinAStarPlanner>(params);
+    return std::make_unique<KinAStarPlanner>(kin_astar_decls().read(params));
   };
   return info;
 }

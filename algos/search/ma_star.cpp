@@ -9,14 +9,13 @@
 // - step 3 (eq. 5.1b): a turning point is removed when the segment joining its neighbours keeps
 //   every obstacle circle of radius r_obs (around the cell centres) clear, repeated until no
 //   point can be removed.
+// Steps 2-3 are the pipeline's `turning_points` shortcut (algos/postprocess/postprocess_params.h)
+// under SightRule::circles(r_obs), then the optional `smoothing`.
 // expanded_nodes: cells taken off the open list and closed (the goal included).
 
 #include <cmath>
 #include <memory>
 
-#include "algos/search/grid_search_params.h"
-#include "algos/postprocess/path_simplify.h"
-#include "algos/postprocess/postprocess_params.h"
 #include "algos/search/search_core.h"
 
 namespace agv {
@@ -42,58 +41,60 @@ struct MaStarPolicy : PolicyDefaults {
 
 class MaStarPlanner final : public Planner {
  public:
-  explicit MaStarPlanner(const Params& params)
-      : setup_(grid_search_setup_of(params)),
-        euclid_g_(params.choice("g_mode") == "euclid_from_start"),
-        r_obs_(params.number("r_obs")) {
-    read_smoothing_params(params, post_);
+  explicit MaStarPlanner(const MaStarOptions& options) : o_(options) {
+    o_.post.shortcut = ShortcutMode::turning_points;  // step 2 (eq. 5.1a), step 3 (eq. 5.1b)
   }
 
   PlanResult plan(const PlanRequest& request) const override {
-    PlanResult result = plan_grid_search(request, setup_,
-                                         MaStarPolicy(request.start, request.goal, euclid_g_));
-    if (!result.ok()) return result;
-    WorkingPath path(std::move(result.path));
-    {
-      PhaseTimer timer(result, "postprocess");
-      path.keep(collinear_keep(path.points));  // step 2, eq. 5.1a
-      path.keep(turning_point_keep(request.grid, path.points,
-                                   SightRule::circles(r_obs_, setup_.rule)));  // step 3, eq. 5.1b
-    }
-    finish_path(request.grid, post_, path, result);
+    PlanResult result = plan_grid_search(
+        request, o_.search.setup,
+        MaStarPolicy(request.start, request.goal, o_.g_mode == MaStarG::euclid_from_start));
+    apply_postprocessing(request.grid, o_.post, SightRule::circles(o_.r_obs, o_.search.setup.rule),
+                         result);
     return result;
   }
 
  private:
-  GridSearchSetup setup_;
-  bool euclid_g_;
-  double r_obs_;
-  PostprocessOptions post_;
+  MaStarOptions o_;
 };
 
+ParamDecls<MaStarOptions> ma_star_decls() {
+  ParamDecls<MaStarOptions> d = ma_star_search_decls();
+  d.include(&MaStarOptions::post, smoothing_decls(SmoothingMode::none));
+  return d;
+}
+
 }  // namespace
+
+ParamDecls<MaStarOptions> ma_star_search_decls() {
+  ParamDecls<MaStarOptions> d;
+  d.include(&MaStarOptions::search, grid_search_decls(CornerRule::allow, std::nullopt))
+      .choice("g_mode", &MaStarOptions::g_mode, MaStarG::euclid_from_start,
+              ChoiceTable<MaStarG>{{"euclid_from_start", MaStarG::euclid_from_start},
+                                   {"path", MaStarG::path}},
+              "B(n): euclid_from_start = straight-line distance from the start (eq. 4.1b as "
+              "printed, default); path = accumulated path cost (plain A*)")
+      .number("r_obs", &MaStarOptions::r_obs, 0.70710678118654752, 0.0, 5.0,
+              "radius of the inflated obstacle circles around cell centres for turning-point "
+              "removal (eq. 5.1b), cells; default half a cell diagonal");
+  return d;
+}
+
+std::unique_ptr<Planner> make_ma_star(const MaStarOptions& options) {
+  return std::make_unique<MaStarPlanner>(options);
+}
 
 PlannerInfo ma_star_planner() {
   PlannerInfo info;
   info.name = "ma_star";
-  info.summary = "MA*: f = B + C with B as printed (Euclidean from the start), collinear and "
-                 "turning-point removal around inflated obstacles";
+  info.summary =
+      "MA*: f = B + C with B as printed (Euclidean from the start), collinear and "
+      "turning-point removal around inflated obstacles";
   info.source = "paper 000 section 4.1, steps 2-3 (eq. 4.1a-b, 5.1a-b); PLANNERS.md MA*";
-  info.expanded_nodes_meaning =
-      "cells taken off the open list and closed (goal included), as A*";
-  info.params = {
-      corner_rule_param(CornerRule::allow),
-      diagonal_cost_param(),
-      ParamSpec::choice("g_mode", "euclid_from_start", {"euclid_from_start", "path"},
-                        "B(n): euclid_from_start = straight-line distance from the start (eq. "
-                        "4.1b as printed, default); path = accumulated path cost (plain A*)"),
-      ParamSpec::number("r_obs", 0.70710678118654752, 0.0, 5.0,
-                        "radius of the inflated obstacle circles around cell centres for "
-                        "turning-point removal (eq. 5.1b), cells; default half a cell diagonal"),
-  };
-  for (auto& spec : smoothing_params(SmoothingMode::none)) info.params.push_back(std::move(spec));
+  info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included), as A*";
+  info.params = ma_star_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
-    return std::make_unique<MaStarPlanner>(params);
+    return make_ma_star(ma_star_decls().read(params));
   };
   return info;
 }

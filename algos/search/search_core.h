@@ -33,12 +33,17 @@
 //       neighbourhood is obstacle-free, kinematic A*'s five-direction case). Default 0xFF.
 //
 // (e) the corner rule and (f) diagonal_cost come in GridSearchSetup. (g) A Listener (default
-// NullListener, whose empty inline hooks compile away, STYLE.md item 3) sees every expansion and
+// NullListener, whose empty inline hooks compile away, STYLE.md item 3) sees every cell put on
+// the open list for the first time (generated, the source included), every expansion and every
 // relaxation, for counting or for recording a search picture.
 //
-// Open list (algos/search/open_list.h): a binary heap with decrease-key and a held slot, keys packed
-// as (priority, g, cell index). Ties: equal priority -> larger g first -> lower padded index;
-// deterministic. A re-relaxed cell's key may go up as well as down (turn-dependent keys).
+// The expansion itself (free-neighbour byte, move table, policy hooks, relaxation) is
+// GridExpander::expand() on a SearchFrontier, so a search with more than one frontier
+// (bidirectional A*) runs the same code per direction with its own loop and stopping rule.
+//
+// Open list (algos/search/open_list.h): a binary heap with decrease-key and a held slot, keys
+// packed as (priority, g, cell index). Ties: equal priority -> larger g first -> lower padded
+// index; deterministic. A re-relaxed cell's key may go up as well as down (turn-dependent keys).
 //
 // Memory, all in GridSearchBuffers (from Scratch: one per worker thread, shared by every grid
 // planner): one byte of search stamp per padded cell (stamp == open: seen this search,
@@ -56,8 +61,8 @@
 #include <optional>
 #include <vector>
 
-#include "algos/search/open_list.h"
 #include "algos/planner.h"
+#include "algos/search/open_list.h"
 #include "core/corner_rule.h"
 #include "core/grid.h"
 
@@ -81,6 +86,7 @@ struct GridSearchOutcome {
 };
 
 struct NullListener {
+  void generated(int /*index*/) {}
   void expanded(int /*index*/, double /*g*/) {}
   void relaxed(int /*index*/, double /*g*/, double /*key*/) {}
 };
@@ -138,6 +144,115 @@ struct FastDivider {
 
 }  // namespace search_detail
 
+// One search direction's state in its GridSearchBuffers (after begin()): the stamps with this
+// search's open and closed values, the nodes and the open list.
+struct SearchFrontier {
+  explicit SearchFrontier(GridSearchBuffers& buffers)
+      : stamp(buffers.stamps()),
+        nodes(buffers.nodes()),
+        open(buffers.open()),
+        open_stamp(buffers.open_stamp()),
+        closed_stamp(buffers.closed_stamp()) {
+    open.reset(nodes);
+  }
+  // Labels `index` with g = 0 and no parent and pushes it with priority `key`.
+  template <class Listener>
+  void push_source(int index, double key, Listener& listener) {
+    stamp[index] = open_stamp;
+    nodes[index].g = 0.0;
+    nodes[index].parent_dir = static_cast<std::uint8_t>(kNoDirection);
+    listener.generated(index);
+    open.push(open_key::pack(key, 0.0, index));
+  }
+  // Takes the best open cell off the list and closes it.
+  int pop_and_close() {
+    const int i = open_key::index_of(open.pop());
+    stamp[i] = closed_stamp;
+    return i;
+  }
+  bool labelled(int index) const {
+    return stamp[index] == open_stamp || stamp[index] == closed_stamp;
+  }
+
+  std::uint8_t* stamp;
+  SearchNode* nodes;
+  OpenList& open;
+  std::uint8_t open_stamp;
+  std::uint8_t closed_stamp;
+};
+
+// What every expansion on one grid under one setup shares: move offsets and costs, the corner
+// rule's move table, the padded index -> (x, y) division.
+class GridExpander {
+ public:
+  GridExpander(const Grid& grid, const GridSearchSetup& setup)
+      : stride_(grid.stride()),
+        occ_(grid.occupancy()),
+        moves_(move_table(setup.rule)),
+        row_of_(static_cast<std::uint32_t>(grid.stride())) {
+    for (int d = 0; d < 8; ++d) {
+      offset_[d] = kDy[d] * stride_ + kDx[d];
+      step_[d] = is_diagonal(d) ? setup.diagonal_cost : 1.0;
+    }
+  }
+
+  int stride() const { return stride_; }
+
+  // Relaxes the children of the just-closed cell i (cost so far g) that the corner rule and the
+  // policy's direction mask allow and that are not closed: a new child is pushed, an open one
+  // whose g improves gets its key updated.
+  template <class Policy, class Listener>
+  [[gnu::always_inline]] inline void expand(int i, double g, const Policy& policy,
+                                            SearchFrontier& frontier, Listener& listener) const {
+    using open_key::pack;
+    unsigned free_mask = 0;
+    for (int d = 0; d < 8; ++d) free_mask |= static_cast<unsigned>(occ_[i + offset_[d]] == 0) << d;
+    // Padded index i = (y + 1) * stride + (x + 1).
+    const auto padded_row = static_cast<int>(row_of_(static_cast<std::uint32_t>(i)));
+    const int x = i - padded_row * stride_ - 1;
+    const int y = padded_row - 1;
+    const auto free_byte = static_cast<std::uint8_t>(free_mask);
+    unsigned allowed = moves_[free_byte] & policy.direction_mask(x, y, i, free_byte);
+    std::uint8_t* stamp = frontier.stamp;
+    SearchNode* nodes = frontier.nodes;
+    const std::uint8_t open = frontier.open_stamp;
+    const std::uint8_t closed = frontier.closed_stamp;
+    const int dir_in = nodes[i].parent_dir;
+
+    while (allowed != 0) {
+      const int d = std::countr_zero(allowed);
+      allowed &= allowed - 1;
+      const int c = i + offset_[d];
+      const std::uint8_t seen = stamp[c];
+      if (seen == closed) continue;
+      const int cx = x + kDx[d];
+      const int cy = y + kDy[d];
+      const double child_g = policy.child_g(g, step_[d], cx, cy);
+      SearchNode& child = nodes[c];
+      if (seen == open && !(child_g < child.g)) continue;
+      child.g = child_g;
+      child.parent_dir = static_cast<std::uint8_t>(d);
+      const double key = policy.key(child_g, policy.heuristic(cx, cy, c), dir_in, d);
+      listener.relaxed(c, child_g, key);
+      if (seen == open) {
+        frontier.open.update(pack(key, child_g, c));
+      } else {
+        stamp[c] = open;
+        listener.generated(c);
+        frontier.open.push(pack(key, child_g, c));
+      }
+    }
+  }
+
+ private:
+  int stride_;
+  const std::uint8_t* occ_;
+  const MoveTable& moves_;
+  int offset_[8];
+  double step_[8];
+  search_detail::FastDivider row_of_;
+};
+
 // Runs one search from start to goal (both in bounds and free). The parent chain of the goal is
 // left in `buffers` for trace_cells().
 template <class Policy, class Listener = NullListener>
@@ -145,41 +260,25 @@ GridSearchOutcome grid_search(const Grid& grid, Cell start, Cell goal, const Gri
                               const Deadline& deadline, const Policy& policy,
                               GridSearchBuffers& buffers, Listener&& listener = Listener{}) {
   using open_key::index_of;
-  using open_key::pack;
-  const int stride = grid.stride();
-  const std::uint8_t* occ = grid.occupancy();
-  const MoveTable& moves = move_table(setup.rule);
-  int offset[8];
-  double step[8];
-  for (int d = 0; d < 8; ++d) {
-    offset[d] = kDy[d] * stride + kDx[d];
-    step[d] = is_diagonal(d) ? setup.diagonal_cost : 1.0;
-  }
-  const search_detail::FastDivider row_of(static_cast<std::uint32_t>(stride));
-
+  const GridExpander expander(grid, setup);
+  const int stride = expander.stride();
   buffers.begin(grid.padded_size());
-  std::uint8_t* stamp = buffers.stamps();
-  SearchNode* nodes = buffers.nodes();
-  const std::uint8_t open = buffers.open_stamp();
-  const std::uint8_t closed = buffers.closed_stamp();
-  OpenList& queue = buffers.open();
-  queue.reset(nodes);
+  SearchFrontier frontier(buffers);
+  const std::uint8_t* stamp = frontier.stamp;
+  const OpenList& queue = frontier.open;
 
   GridSearchOutcome out;
   const int source = grid.index(start);
   const int target = grid.index(goal);
-  stamp[source] = open;
-  nodes[source].g = 0.0;
-  nodes[source].parent_dir = static_cast<std::uint8_t>(kNoDirection);
   const double start_h = policy.heuristic(start.x, start.y, source);
-  queue.push(pack(policy.key(0.0, start_h, kNoDirection, kNoDirection), 0.0, source));
+  frontier.push_source(source, policy.key(0.0, start_h, kNoDirection, kNoDirection), listener);
 
   while (!queue.empty()) {
     if ((out.expanded & (kDeadlineInterval - 1)) == 0 && deadline.expired()) {
       out.failure = Failure::limit;
       return out;
     }
-    const int i = index_of(queue.pop());
+    const int i = frontier.pop_and_close();
     if (!queue.empty()) {
       // The next cell to expand is usually the current top: fetch its three stamp rows while
       // this one is expanded (the stamp loads are the search's main cache misses).
@@ -188,47 +287,14 @@ GridSearchOutcome grid_search(const Grid& grid, Cell start, Cell goal, const Gri
       __builtin_prefetch(stamp + next - 1);
       __builtin_prefetch(stamp + next + stride - 1);
     }
-    stamp[i] = closed;
     ++out.expanded;
-    const double g = nodes[i].g;
+    const double g = frontier.nodes[i].g;
     listener.expanded(i, g);
     if (i == target) {
       out.goal_g = g;
       return out;
     }
-
-    unsigned free_mask = 0;
-    for (int d = 0; d < 8; ++d) free_mask |= static_cast<unsigned>(occ[i + offset[d]] == 0) << d;
-    // Padded index i = (y + 1) * stride + (x + 1).
-    const auto padded_row = static_cast<int>(row_of(static_cast<std::uint32_t>(i)));
-    const int x = i - padded_row * stride - 1;
-    const int y = padded_row - 1;
-    const auto free_byte = static_cast<std::uint8_t>(free_mask);
-    unsigned allowed = moves[free_byte] & policy.direction_mask(x, y, i, free_byte);
-    const int dir_in = nodes[i].parent_dir;
-
-    while (allowed != 0) {
-      const int d = std::countr_zero(allowed);
-      allowed &= allowed - 1;
-      const int c = i + offset[d];
-      const std::uint8_t seen = stamp[c];
-      if (seen == closed) continue;
-      const int cx = x + kDx[d];
-      const int cy = y + kDy[d];
-      const double child_g = policy.child_g(g, step[d], cx, cy);
-      SearchNode& child = nodes[c];
-      if (seen == open && !(child_g < child.g)) continue;
-      child.g = child_g;
-      child.parent_dir = static_cast<std::uint8_t>(d);
-      const double key = policy.key(child_g, policy.heuristic(cx, cy, c), dir_in, d);
-      listener.relaxed(c, child_g, key);
-      if (seen == open) {
-        queue.update(pack(key, child_g, c));
-      } else {
-        stamp[c] = open;
-        queue.push(pack(key, child_g, c));
-      }
-    }
+    expander.expand(i, g, policy, frontier, listener);
   }
   out.failure = Failure::no_path;
   return out;
@@ -245,10 +311,11 @@ std::vector<Point> cell_centres(const std::vector<Cell>& cells);
 std::optional<PlanResult> check_grid_query(const PlanRequest& request, CornerRule rule);
 
 // The whole plan call of a planner that is just a search: checks the query, runs grid_search()
-// under a PhaseTimer "search", returns the cell-centre path and the expansion count.
-template <class Policy>
+// under a PhaseTimer "search", returns the cell-centre path and the expansion count. `listener`
+// sees the search (grid_search()); it is not called when the query is invalid.
+template <class Policy, class Listener = NullListener>
 PlanResult plan_grid_search(const PlanRequest& request, const GridSearchSetup& setup,
-                            const Policy& policy) {
+                            const Policy& policy, Listener&& listener = Listener{}) {
   if (auto bad = check_grid_query(request, setup.rule)) return std::move(*bad);
   PlanResult result;
   result.rule = setup.rule;
@@ -256,7 +323,7 @@ PlanResult plan_grid_search(const PlanRequest& request, const GridSearchSetup& s
     PhaseTimer timer(result, "search");
     auto& buffers = request.scratch.get<GridSearchBuffers>();
     const GridSearchOutcome out = grid_search(request.grid, request.start, request.goal, setup,
-                                              request.deadline, policy, buffers);
+                                              request.deadline, policy, buffers, listener);
     result.expanded_nodes = out.expanded;
     if (out.failure == Failure::none) {
       std::vector<Cell> cells;

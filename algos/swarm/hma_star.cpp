@@ -1,6 +1,7 @@
 // GCC 12 flags the `_mm512_undefined_pd()` placeholders inside its own AVX-512 intrinsics once
 // Eigen's packet min/max/sqrt are inlined here (GCC bug 105593, a false positive; as in
-// algos/local/dwa.cpp). Before the includes: the warning is reported at the intrinsics header's lines.
+// algos/local/dwa.cpp). Before the includes: the warning is reported at the intrinsics header's
+// lines.
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 
 #include "algos/swarm/hma_star.h"
@@ -32,21 +33,19 @@
 // expanded_nodes: MA*'s expansions (cells closed by the search).
 
 #include <Eigen/Core>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "algos/postprocess/path_simplify.h"
+#include "algos/search/ma_star.h"
+#include "core/cell_geometry.h"
 #include "core/line_of_sight.h"
 #include "core/line_of_sight_batch.h"
-#include "algos/search/ma_star.h"
-#include "algos/postprocess/path_simplify.h"
-#include "core/cell_geometry.h"
 
 namespace agv {
 
@@ -55,8 +54,6 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // A window's gbest replaces P(n+1) only when it shortens the local path by more than rounding.
 constexpr double kMinGain = 1e-9;
-// MA*'s parameters that HMA* declares and passes on (its smoothing ones it leaves at `none`).
-const char* const kMaStarParams[] = {"corner_rule", "diagonal_cost", "g_mode", "r_obs"};
 
 using Swarm = Eigen::Array<double, Eigen::Dynamic, 2>;
 using Row2 = Eigen::Array<double, 1, 2>;
@@ -235,32 +232,55 @@ class WindowSwarm {
   double gbest_cost_ = kInf;
 };
 
-nlohmann::json ma_star_params_of(const Params& params) {
-  nlohmann::json out = nlohmann::json::object();
-  for (const char* name : kMaStarParams) out[name] = params.values().at(name);
-  return out;
+const ChoiceTable<Inertia>& inertia_names() {
+  static const ChoiceTable<Inertia> table = {{"stochastic", Inertia::stochastic},
+                                             {"adaptive", Inertia::adaptive},
+                                             {"linear", Inertia::linear}};
+  return table;
+}
+
+struct HmaStarOptions {
+  MaStarOptions ma;  // stage 1; its smoothing stays `none`
+  PsoSettings pso;
+};
+
+ParamDecls<HmaStarOptions> hma_star_decls() {
+  using O = HmaStarOptions;
+  auto pso = [](auto field) {
+    return [field](O & o) -> auto& { return o.pso.*field; };
+  };
+  ParamDecls<O> d;
+  d.include(&O::ma, ma_star_search_decls())
+      .integer("swarm", pso(&PsoSettings::swarm), 30, 1, 10000, "particles per window")
+      .integer("iterations", pso(&PsoSettings::iterations), 50, 1, 100000,
+               "T_max: PSO iterations per window")
+      .number("c1", pso(&PsoSettings::c1), 1.5, 0.0, 10.0, "self-learning factor c1 (eq. 4.2a)")
+      .number("c2", pso(&PsoSettings::c2), 1.5, 0.0, 10.0, "social-learning factor c2 (eq. 4.2a)")
+      .number("w_max", pso(&PsoSettings::w_max), 0.9, 0.0, 2.0, "maximum inertia weight")
+      .number("w_min", pso(&PsoSettings::w_min), 0.4, 0.0, 2.0, "minimum inertia weight")
+      .choice("inertia", pso(&PsoSettings::inertia), Inertia::stochastic, inertia_names(),
+              "inertia weight: stochastic = eq. 5.1d, w_max - (w_max - w_min)(j/T_max)e^rho with "
+              "rho uniform in [-0.1, 0.1] per iteration (default); adaptive = eq. 5.1c as "
+              "printed, (w_max + w_min)(gbest_j / gbest_j-1) - w_max j / T_max; linear = eq. "
+              "5.1d with rho = 0")
+      .number("vmax_fraction", pso(&PsoSettings::vmax_fraction), 0.2, 0.0, 10.0,
+              "maximum particle speed per coordinate, as a fraction of the (widened) window "
+              "diagonal")
+      .number("window_margin", pso(&PsoSettings::margin), 1.0, 0.0, 1000.0,
+              "cells added on every side of the bounding box of P(n), P(n+2) where the swarm "
+              "lives (eq. 5.1e's box, widened so that a detour is reachable)")
+      .boolean("opposition", pso(&PsoSettings::opposition), true,
+               "opposition-based learning each iteration (step 11): move a particle to lo + hi - "
+               "x when that is no worse");
+  return d;
 }
 
 class HmaStarPlanner final : public Planner {
  public:
-  explicit HmaStarPlanner(const Params& params) {
-    const PlannerInfo ma = ma_star_planner();
-    ma_star_ = ma.make(Params::resolve(ma.params, ma_star_params_of(params), "hma_star"));
-    const auto rule = corner_rule_from_string(params.choice("corner_rule"));
-    const auto inertia = inertia_from_string(params.choice("inertia"));
-    if (!rule || !inertia) throw std::logic_error("hma_star: parameters not validated");
-    sight_ = SightRule::circles(params.number("r_obs"), *rule);
-    pso_.swarm = static_cast<int>(params.integer("swarm"));
-    pso_.iterations = static_cast<int>(params.integer("iterations"));
-    pso_.c1 = params.number("c1");
-    pso_.c2 = params.number("c2");
-    pso_.w_max = params.number("w_max");
-    pso_.w_min = params.number("w_min");
-    pso_.inertia = *inertia;
-    pso_.vmax_fraction = params.number("vmax_fraction");
-    pso_.margin = params.number("window_margin");
-    pso_.opposition = params.boolean("opposition");
-  }
+  explicit HmaStarPlanner(const HmaStarOptions& options)
+      : ma_star_(make_ma_star(options.ma)),
+        sight_(SightRule::circles(options.ma.r_obs, options.ma.search.setup.rule)),
+        pso_(options.pso) {}
 
   PlanResult plan(const PlanRequest& request) const override {
     PlanResult result = ma_star_->plan(request);  // phases "search" and "postprocess"
@@ -301,9 +321,8 @@ class HmaStarPlanner final : public Planner {
 }  // namespace
 
 std::optional<Inertia> inertia_from_string(std::string_view name) {
-  if (name == "stochastic") return Inertia::stochastic;
-  if (name == "adaptive") return Inertia::adaptive;
-  if (name == "linear") return Inertia::linear;
+  for (const auto& [n, mode] : inertia_names())
+    if (n == name) return mode;
   return std::nullopt;
 }
 
@@ -328,41 +347,15 @@ PlannerInfo hma_star_planner() {
   PlannerInfo info;
   info.kind = PlannerKind::swarm;
   info.name = "hma_star";
-  info.summary = "HMA*: MA* key nodes, then a sliding-window PSO with stochastic inertia weight "
-                 "and opposition-based learning re-placing each middle node";
+  info.summary =
+      "HMA*: MA* key nodes, then a sliding-window PSO with stochastic inertia weight "
+      "and opposition-based learning re-placing each middle node";
   info.source = "paper 000 section 5 (eq. 4.2a, 5.1c-5.1g, pseudo-code); PLANNERS.md HMA*";
   info.expanded_nodes_meaning = "MA*'s search expansions (cells closed, goal included)";
   info.stochastic = true;
-  for (const ParamSpec& spec : ma_star_planner().params)
-    for (const char* name : kMaStarParams)
-      if (spec.name == name) info.params.push_back(spec);
-  info.params.push_back(ParamSpec::integer("swarm", 30, 1, 10000, "particles per window"));
-  info.params.push_back(
-      ParamSpec::integer("iterations", 50, 1, 100000, "T_max: PSO iterations per window"));
-  info.params.push_back(
-      ParamSpec::number("c1", 1.5, 0.0, 10.0, "self-learning factor c1 (eq. 4.2a)"));
-  info.params.push_back(
-      ParamSpec::number("c2", 1.5, 0.0, 10.0, "social-learning factor c2 (eq. 4.2a)"));
-  info.params.push_back(ParamSpec::number("w_max", 0.9, 0.0, 2.0, "maximum inertia weight"));
-  info.params.push_back(ParamSpec::number("w_min", 0.4, 0.0, 2.0, "minimum inertia weight"));
-  info.params.push_back(ParamSpec::choice(
-      "inertia", "stochastic", {"stochastic", "adaptive", "linear"},
-      "inertia weight: stochastic = eq. 5.1d, w_max - (w_max - w_min)(j/T_max)e^rho with rho "
-      "uniform in [-0.1, 0.1] per iteration (default); adaptive = eq. 5.1c as printed, "
-      "(w_max + w_min)(gbest_j / gbest_j-1) - w_max j / T_max; linear = eq. 5.1d with rho = 0"));
-  info.params.push_back(ParamSpec::number(
-      "vmax_fraction", 0.2, 0.0, 10.0,
-      "maximum particle speed per coordinate, as a fraction of the (widened) window diagonal"));
-  info.params.push_back(ParamSpec::number(
-      "window_margin", 1.0, 0.0, 1000.0,
-      "cells added on every side of the bounding box of P(n), P(n+2) where the swarm lives "
-      "(eq. 5.1e's box, widened so that a detour is reachable)"));
-  info.params.push_back(ParamSpec::boolean(
-      "opposition", true,
-      "opposition-based learning each iteration (step 11): move a particle to lo + hi - x "
-      "when that is no worse"));
+  info.params = hma_star_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
-    return std::make_unique<HmaStarPlanner>(params);
+    return std::make_unique<HmaStarPlanner>(hma_star_decls().read(params));
   };
   return info;
 }

@@ -10,11 +10,11 @@
 #include <tuple>
 #include <vector>
 
+#include "algos/registry.h"
 #include "algos/search/astar.h"
 #include "algos/search/dijkstra.h"
 #include "algos/search/grid_search_params.h"
 #include "algos/search/heuristics.h"
-#include "algos/registry.h"
 #include "algos/search/search_core.h"
 #include "core/corner_rule.h"
 #include "generators/movingai.h"
@@ -96,7 +96,7 @@ TEST(GridSearchParams, DefaultsAndValidation) {
   EXPECT_EQ(astar.params.choice("heuristic"), "euclidean");
   EXPECT_DOUBLE_EQ(astar.params.number("diagonal_cost"), kSqrt2);
   const auto dijkstra = make("dijkstra", {{"corner_rule", "no_corner_cut"}});
-  EXPECT_EQ(corner_rule_of(dijkstra.params), CornerRule::no_corner_cut);
+  EXPECT_EQ(dijkstra.params.choice("corner_rule"), "no_corner_cut");
   EXPECT_THROW(make("dijkstra", {{"heuristic", "octile"}}), InputError);
   EXPECT_THROW(make("astar", {{"diagonal_cost", 2.5}}), InputError);
   EXPECT_THROW(make("astar", {{"corner_rule", "sideways"}}), InputError);
@@ -137,7 +137,7 @@ TEST_P(MovingAiScenarios, OptimalOnEveryScenario) {
     const PlanResult r = run(*planner, grid, s.start, s.goal, scratch);
     const std::string problem =
         r.ok() ? path_problem(grid, r.path, s.start, s.goal, CornerRule::no_corner_cut)
-                  : std::string("failed: ") + to_string(r.failure);
+               : std::string("failed: ") + to_string(r.failure);
     if (!problem.empty() || !near(path_length(r.path), s.optimal_length, 1e-6)) {
       ++failures;
       ADD_FAILURE() << "query " << q << " (line " << s.line << "): length " << path_length(r.path)
@@ -381,8 +381,10 @@ struct TurnPenalty : AStarPolicy<EuclideanHeuristic> {
   }
 };
 struct CountingListener {
+  void generated(int) { ++generations; }
   void expanded(int, double) { ++expansions; }
   void relaxed(int, double, double) { ++relaxations; }
+  std::int64_t generations = 0;
   std::int64_t expansions = 0;
   std::int64_t relaxations = 0;
 };
@@ -417,6 +419,15 @@ TEST(PolicyHooks, DirectionMaskGValueTurnKeyAndListener) {
   ASSERT_EQ(turned.failure, Failure::none);
   EXPECT_EQ(listener.expansions, turned.expanded);
   EXPECT_GE(listener.relaxations, turned.expanded - 1);
+  // Generated: the source and every cell first put on the open list, i.e. every cell the
+  // search's stamps mark open or closed; a re-relaxed open cell is not generated twice.
+  std::int64_t labelled = 0;
+  for (int i = 0; i < grid.padded_size(); ++i)
+    labelled += buffers.stamps()[i] == buffers.open_stamp() ||
+                buffers.stamps()[i] == buffers.closed_stamp();
+  EXPECT_EQ(listener.generations, labelled);
+  EXPECT_GE(listener.generations, turned.expanded);
+  EXPECT_LE(listener.generations, listener.relaxations + 1);
   trace_cells(buffers, grid, goal, cells);
   EXPECT_EQ(cells.back(), goal);
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the refactoring check set into OUTDIR: configs/quick.json as it is, configs/default.json at
 # 20 maps per cell and each paper config at 50, so that two builds' reports can be compared field
-# by field with slurm/same_report.py (scripts/report_set.sh compare A B).
+# by field with slurm/same_report.py (scripts/report_set.sh compare A B; where they differ,
+# scripts/report_diff.py says where, the config-as-run taken apart).
 # Usage: scripts/report_set.sh run BINARY OUTDIR | scripts/report_set.sh compare DIR_A DIR_B
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -32,7 +33,13 @@ PY
     for a in "$2"/*.json; do
       case $a in *.config.json) continue ;; esac
       b="$3/$(basename "$a")"
-      if $py slurm/same_report.py "$a" "$b"; then echo "same: $(basename "$a")"; else rc=1; fi
+      if $py slurm/same_report.py "$a" "$b" >/dev/null; then
+        echo "same: $(basename "$a")"
+      else
+        # Not equal: say where, with the config-as-run taken apart (renamed parameters).
+        $py scripts/report_diff.py "$a" "$b" || true
+        rc=1
+      fi
     done
     exit $rc
     ;;

@@ -55,14 +55,4 @@ ParamDecls<CornerRule> corner_rule_decls(CornerRule default_rule) {
   return d;
 }
 
-ParamSpec corner_rule_param(CornerRule default_rule) {
-  return corner_rule_decls(default_rule).specs().front();
-}
-
-CornerRule corner_rule_of(const Params& params) {
-  const auto rule = corner_rule_from_string(params.choice("corner_rule"));
-  if (!rule) throw std::logic_error("corner_rule not validated");
-  return *rule;
-}
-
 }  // namespace agv

@@ -27,9 +27,4 @@ ParamDecls<GridSearchOptions> grid_search_decls(CornerRule default_rule,
 // The corner rule alone, for planners outside the search family that move on the same grid.
 ParamDecls<CornerRule> corner_rule_decls(CornerRule default_rule);
 
-// Name-based forms of corner_rule, still used by ACO (algos/swarm/aco.cpp) until it declares its
-// parameters once as well.
-ParamSpec corner_rule_param(CornerRule default_rule);
-CornerRule corner_rule_of(const Params& params);
-
 }  // namespace agv

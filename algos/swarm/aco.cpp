@@ -253,11 +253,6 @@ class Colony {
 
 const ParamDecls<AcoSettings>& aco_decls() {
   static const ParamDecls<AcoSettings> decls = [] {
-    // The grid planners' corner_rule (name, choices, doc), declared in
-    // algos/search/grid_search_params.h.
-    const ParamSpec rule = corner_rule_param(CornerRule::allow);
-    ChoiceTable<CornerRule> rules;
-    for (const auto& name : rule.choices) rules.emplace_back(name, *corner_rule_from_string(name));
     ParamDecls<AcoSettings> d;
     d.integer("ants", &AcoSettings::ants, 20, 1, 1000000,
               "ants per iteration (paper 002 Table 2: 20)")
@@ -276,7 +271,8 @@ const ParamDecls<AcoSettings>& aco_decls() {
                 "in cells) to each cell of its path (paper 002 gives no value)")
         .number("initial_pheromone", &AcoSettings::initial_pheromone, 1.0, 1e-9, 1e9,
                 "pheromone tau0 of every cell at the start (paper 002 gives no value)")
-        .choice(rule.name, &AcoSettings::rule, CornerRule::allow, std::move(rules), rule.doc);
+        // The grid planners' corner_rule (algos/search/grid_search_params.h).
+        .include(&AcoSettings::rule, corner_rule_decls(CornerRule::allow));
     return d;
   }();
   return decls;

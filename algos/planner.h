@@ -20,7 +20,7 @@ enum class Failure { none, no_path, limit, invalid_path, invalid_input };
 const char* to_string(Failure f);
 
 // Cooperative time limit: planners poll expired() every few hundred expansions or iterations
-// (STYLE.md item 7) and give up with Failure::limit. A planner may copy the request's deadline
+// (docs/ARCHITECTURE.md "Style" item 7) and give up with Failure::limit. A planner may copy the request's deadline
 // into a sub-request (a fusion planner's global planner): copies share one limit.
 class Deadline {
  public:
@@ -91,7 +91,7 @@ struct PlanResult {
   CornerRule rule = CornerRule::allow;
   // Nodes taken off the open list, or samples / iterations / ant steps: documented per planner.
   std::int64_t expanded_nodes = 0;
-  // Waypoints before curve sampling (METRICS.md path_nodes), for planners whose path is a
+  // Waypoints before curve sampling (docs/METRICS.md path_nodes), for planners whose path is a
   // sampled curve; -1 when the path's own points are the waypoints.
   std::int64_t waypoints_before_sampling = -1;
   // Planner-specific scalar metrics (aggregated like the engine's, under these names).

@@ -1,5 +1,5 @@
 #pragma once
-// One explicit table of planners, one line per planner (STYLE.md item 6). A config names a
+// One explicit table of planners, one line per planner (docs/ARCHITECTURE.md "Style" item 6). A config names a
 // planner by its stable public name and sets any of its declared parameters.
 
 #include <memory>

@@ -1,5 +1,5 @@
 #pragma once
-// The neighbour rule of PLANNERS.md, one shared implementation for every grid planner and for
+// The neighbour rule of docs/PLANNERS.md, one shared implementation for every grid planner and for
 // the validator. Directions are numbered 0..7; a cell's 8-neighbourhood is summarised as a byte
 // (bit d set = neighbour in direction d is free) and a 256-entry table per rule turns that byte
 // into the mask of allowed moves: one lookup per expansion, no per-move branches.

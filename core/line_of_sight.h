@@ -1,5 +1,5 @@
 #pragma once
-// The one line-of-sight test of the project (PLANNERS.md "Line of sight and clearance"): every
+// The one line-of-sight test of the project (docs/PLANNERS.md "Line of sight and clearance"): every
 // shortcut pass, every sampling/swarm planner and the validator ask "is segment a-b free?" here.
 // The word-parallel and batched forms (core/line_of_sight_batch.h) agree with this scalar walk.
 //
@@ -19,7 +19,7 @@
 // under cells(rule) exactly when move_allowed() says it is legal under the rule.
 //
 // `clearance` mode: the cells test AND every obstacle cell CENTRE at distance >= radius from
-// the segment (PLANNERS.md "margin d": radius = d + 0.5; paper 000 eq. 5.1b: obstacles as
+// the segment (docs/PLANNERS.md "margin d": radius = d + 0.5; paper 000 eq. 5.1b: obstacles as
 // circles of radius r_obs around their centres).
 //
 // Tolerance: a coordinate within kSightEpsilon (1e-9 cells) of an integer is taken as on that
@@ -46,7 +46,7 @@ struct SightRule {
   double radius = 0.0;
 
   static SightRule cells(CornerRule rule = CornerRule::no_corner_cut);
-  // PLANNERS.md "margin d": radius d + 0.5 (margin 0 is the same as cells).
+  // docs/PLANNERS.md "margin d": radius d + 0.5 (margin 0 is the same as cells).
   static SightRule margin(double d, CornerRule rule = CornerRule::no_corner_cut);
   // Paper 000 eq. 5.1b: obstacles are circles of radius r_obs around cell centres.
   static SightRule circles(double r_obs, CornerRule rule = CornerRule::no_corner_cut);

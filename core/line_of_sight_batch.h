@@ -1,5 +1,5 @@
 #pragma once
-// Batched and vectorised line of sight over the grid's bit-packed rows (PLANNERS.md "Line of
+// Batched and vectorised line of sight over the grid's bit-packed rows (docs/PLANNERS.md "Line of
 // sight and clearance": the hot loop of PSO and of every shortcut pass). Same verdicts, bit for
 // bit, as the reference walk (segment_free_reference / check_segment in core/line_of_sight.h)
 // for every SightRule: tests/core/test_los_simd.cpp checks 100 000 random segments per mode.

@@ -1,5 +1,5 @@
 #pragma once
-// The static-planner metrics of METRICS.md, computed by the engine from a validated path (never
+// The static-planner metrics of docs/METRICS.md, computed by the engine from a validated path (never
 // reported by the planner), so every planner is measured by one ruler. optimality_ratio needs
 // the Dijkstra reference and is computed by the runner.
 
@@ -45,11 +45,11 @@ struct PathMetrics {
   double motion_time_s = 0.0;
 };
 
-inline constexpr double kTurnThreshold = 1e-9;  // rad, METRICS.md "turns"
+inline constexpr double kTurnThreshold = 1e-9;  // rad, docs/METRICS.md "turns"
 
 // Precondition: the path passed validate_path (non-empty, finite, inside the grid).
 // `waypoints` >= 0 overrides path_nodes (and its motion-time term) for a path that is a sampled
-// curve: METRICS.md counts waypoints before sampling.
+// curve: docs/METRICS.md counts waypoints before sampling.
 PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
                                  const MotionTimeParams& motion = {},
                                  std::int64_t plan_time_ns = 0, std::int64_t waypoints = -1);

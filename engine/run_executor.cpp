@@ -127,7 +127,7 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
     if (values[i].first != kRunMetricNames[i]) throw std::logic_error("metric order mismatch");
     out.metrics[i] = values[i].second;
   }
-  // The reference is the optimum under no_corner_cut (METRICS.md); a planner allowed to cut
+  // The reference is the optimum under no_corner_cut (docs/METRICS.md); a planner allowed to cut
   // corners can score below 1.
   if (auto opt = map.optimal_length(CornerRule::no_corner_cut, scratch); opt && *opt > 0.0) {
     out.metrics[kOptimalityMetric] = m.path_length / *opt;

@@ -1,7 +1,7 @@
 #pragma once
 // One run: one planner on one map. The planner proposes; the engine judges. Its path is
 // validated independently and every metric is computed here from the path, so all planners are
-// measured by one ruler (METRICS.md). Used by the sweep runner and by `agvbench plan`.
+// measured by one ruler (docs/METRICS.md). Used by the sweep runner and by `agvbench plan`.
 
 #include <array>
 #include <cstdint>

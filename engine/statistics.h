@@ -1,5 +1,5 @@
 #pragma once
-// Exact statistics over per-run scalars kept in task order (METRICS.md "Aggregation"). Every
+// Exact statistics over per-run scalars kept in task order (docs/METRICS.md "Aggregation"). Every
 // function reads its input in the order given and sums with Neumaier's compensated summation,
 // so a report is identical whatever the thread count that produced the values.
 //

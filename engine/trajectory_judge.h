@@ -2,7 +2,7 @@
 // The engine's judge of a simulated robot run (the fusion planners, algos/local/fusion.h). The
 // planner proposes a trajectory; the engine decides, independently of the planner's own world
 // code, whether the robot disc hit anything and whether it reached the goal, and computes the
-// fusion metrics of METRICS.md from the record alone.
+// fusion metrics of docs/METRICS.md from the record alone.
 //
 // Checks, in order:
 // 1. shape: one time, position and heading per sample, one (v, w) command per interval, every

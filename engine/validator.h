@@ -1,5 +1,5 @@
 #pragma once
-// The independent path validator (METRICS.md "success"): every returned path is re-checked
+// The independent path validator (docs/METRICS.md "success"): every returned path is re-checked
 // against the map with the shared line-of-sight test, whatever the planner claimed. It knows
 // nothing of any planner.
 

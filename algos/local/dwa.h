@@ -1,6 +1,6 @@
 #pragma once
 // The dynamic window approach (Fox, Burgard, Thrun 1997; paper 003 section 3, paper 004
-// section 3; PLANNERS.md "DWA local planner and the fusion planners"). One control step:
+// section 3; docs/PLANNERS.md "DWA local planner and the fusion planners"). One control step:
 //   1. window V_m n V_d (eq. 8-9): velocity limits intersected with what one control period
 //      of maximum acceleration reaches from the current (v, w);
 //   2. n_v x n_w velocity pairs sampled on a regular grid over that window (endpoints included);
@@ -98,7 +98,7 @@ struct Disc {
   Point centre;  // cells
   double radius = 0.0;
   // cells/s: the rollouts move the disc at this velocity; zero = seen at its current position
-  // only (PLANNERS.md), which is the papers' DWA.
+  // only (docs/PLANNERS.md), which is the papers' DWA.
   Point velocity;
 };
 struct DwaView {

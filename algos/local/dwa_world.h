@@ -1,5 +1,5 @@
 #pragma once
-// The time-stepped world a fusion run drives through (PLANNERS.md "DWA local planner and the
+// The time-stepped world a fusion run drives through (docs/PLANNERS.md "DWA local planner and the
 // fusion planners"): the grid's static obstacles, unknown static cells (obstacles the global
 // planner did not see) and moving obstacles (discs at constant speed, reflecting off the walls
 // and off static and unknown cells). The world does not react to the robot, and the planner

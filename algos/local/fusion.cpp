@@ -61,18 +61,18 @@ struct FusionVariant {
 
 constexpr FusionVariant kDwa{
     "dwa", "pure DWA toward the goal in a world with unknown and moving obstacles",
-    "paper 003 section 3 (improved DWA alone: set score improved_003); PLANNERS.md", nullptr,
+    "paper 003 section 3 (improved DWA alone: set score improved_003); docs/PLANNERS.md", nullptr,
     DwaScore::classic};
 constexpr FusionVariant kAstarDwa{
     "fusion_astar_dwa", "classic A* global path + classic DWA (the papers' baseline)",
-    "paper 003 sections 4-5 and paper 004 section 4 baseline; PLANNERS.md", "astar",
+    "paper 003 sections 4-5 and paper 004 section 4 baseline; docs/PLANNERS.md", "astar",
     DwaScore::classic};
 constexpr FusionVariant kAltDwa{"fusion_alt_dwa", "alternative A* global path + improved DWA",
-                                "paper 003 sections 2-4 (eq. 13); PLANNERS.md", "alt_astar",
+                                "paper 003 sections 2-4 (eq. 13); docs/PLANNERS.md", "alt_astar",
                                 DwaScore::improved_003};
 constexpr FusionVariant kKinDwa{
     "fusion_kin_dwa", "kinematic-constraint A* global path + following DWA",
-    "paper 004 sections 2-3 (eq. 13 PHead); PLANNERS.md", "kin_astar", DwaScore::following_004};
+    "paper 004 sections 2-3 (eq. 13 PHead); docs/PLANNERS.md", "kin_astar", DwaScore::following_004};
 
 // The global planner's parameters, declared only by the fusion variants.
 void declare_global(ParamDecls<PlannerSetup>& d, const char* global_default,

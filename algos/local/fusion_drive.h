@@ -1,5 +1,5 @@
 #pragma once
-// The fusion control loop (PLANNERS.md "DWA local planner and the fusion planners"): a robot
+// The fusion control loop (docs/PLANNERS.md "DWA local planner and the fusion planners"): a robot
 // drives from the start through the key points of a global path, one DWA step per control
 // period, in a DwaWorld. Used by the fusion planners (algos/local/fusion.h) and, with a hand-made
 // world, by tests.

@@ -54,14 +54,14 @@ struct BsplineOptions {
 // Paper 004 section 2.4: the B-spline whose control points are dense[kept[0]], dense[kept[1]],
 // ... (kept increasing, dense[kept] a free polyline under `sight`). Where the sampled curve
 // hits, the removed dense point between the hit segment's control points that lies nearest the
-// hit is re-inserted and the curve refitted (PLANNERS.md); with no removed point left there, the
+// hit is re-inserted and the curve refitted (docs/PLANNERS.md); with no removed point left there, the
 // control point nearest the hit is tripled (the curve then runs along the control polygon
 // through it). After max_refits, the control polygon dense[kept] itself is returned.
 std::vector<Point> bspline_smooth(const Grid& grid, std::span<const Point> dense,
                                   std::vector<int> kept, const SightRule& sight,
                                   const BsplineOptions& options = {});
 
-// Paper 002 eq. 12-13 (section 4.2 "obstacle avoidance adjustment"), resolved in PLANNERS.md:
+// Paper 002 eq. 12-13 (section 4.2 "obstacle avoidance adjustment"), resolved in docs/PLANNERS.md:
 // 1. each interior key point with an obstacle among its cell's 8 neighbours is moved `offset`
 //    (L/2) away from them: k - offset * a / |a|, a = sum of the unit vectors from k to those
 //    obstacle centres (eq. 12 direction, eq. 13 move);

@@ -1,5 +1,5 @@
 #pragma once
-// Path simplification steps shared by every planner (PLANNERS.md "Line of sight and clearance"
+// Path simplification steps shared by every planner (docs/PLANNERS.md "Line of sight and clearance"
 // and the A* family sections): one implementation of each, every collision test through
 // core/line_of_sight.h.
 //
@@ -51,7 +51,7 @@ std::vector<int> greedy_keep(const Grid& grid, std::span<const Point> path, cons
 void shortcut_greedy(const Grid& grid, std::vector<Point>& path, const SightRule& sight);
 void remove_redundant_from_goal(const Grid& grid, std::vector<Point>& path, const SightRule& sight);
 
-// Paper 002 Algorithm 2, its intent (the printed condition is garbled, PLANNERS.md): from the
+// Paper 002 Algorithm 2, its intent (the printed condition is garbled, docs/PLANNERS.md): from the
 // current key point the next key point is the last path point still in sight before the first
 // one that is not; repeat to the goal.
 std::vector<int> forward_keep(const Grid& grid, std::span<const Point> path,

@@ -234,7 +234,7 @@ PlannerInfo prm_planner() {
   info.kind = PlannerKind::sampling;
   info.name = "prm";
   info.summary = "PRM: uniform free samples, k-nearest roadmap, Dijkstra on the roadmap";
-  info.source = "PLANNERS.md Baselines; paper 000 Tables III-XIII (PRM column); Kavraki 1996";
+  info.source = "docs/PLANNERS.md Baselines; paper 000 Tables III-XIII (PRM column); Kavraki 1996";
   info.expanded_nodes_meaning =
       "roadmap nodes: samples drawn in free space plus the start and goal centres";
   info.stochastic = true;

@@ -108,7 +108,7 @@ PlannerInfo rrt_planner() {
   info.kind = PlannerKind::sampling;
   info.name = "rrt";
   info.summary = "RRT: one tree from the start, fixed-step extension, goal bias";
-  info.source = "PLANNERS.md Baselines; paper 000 Tables III-XIII (RRT column); LaValle 1998";
+  info.source = "docs/PLANNERS.md Baselines; paper 000 Tables III-XIII (RRT column); LaValle 1998";
   info.expanded_nodes_meaning = "tree nodes at the end of the plan (root and goal included)";
   info.stochastic = true;
   info.proves_no_path = false;  // gives up with limit after its budget

@@ -1,5 +1,5 @@
 #pragma once
-// The tree of RRT and RRT-Connect (PLANNERS.md "Baselines"): one implementation shared by
+// The tree of RRT and RRT-Connect (docs/PLANNERS.md "Baselines"): one implementation shared by
 // algos/sampling/rrt.cpp and algos/sampling/birrt.cpp. It stores continuous points with parent links and answers
 // "nearest tree node to q" through a spatial index, and extends itself towards a target by one
 // step with the shared line-of-sight test.

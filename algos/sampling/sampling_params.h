@@ -1,6 +1,6 @@
 #pragma once
 // Parameters the sampling baselines (PRM, RRT, RRT-Connect) declare the same way, declared once
-// here so names, ranges and docs never drift between them (STYLE.md item 5).
+// here so names, ranges and docs never drift between them (docs/ARCHITECTURE.md "Style" item 5).
 
 #include "algos/sampling/rrt_tree.h"
 #include "core/corner_rule.h"
@@ -26,7 +26,7 @@ struct RrtSettings {
 ParamDecls<RrtSettings> rrt_decls();
 
 // Deadline poll period of the sampling planners, in iterations (samples, edge checks); a power
-// of two (STYLE.md item 7).
+// of two (docs/ARCHITECTURE.md "Style" item 7).
 inline constexpr long long kSamplingDeadlineInterval = 256;
 
 }  // namespace agv

@@ -117,7 +117,7 @@ PlannerInfo alt_astar_planner() {
   info.summary =
       "paper 003 alternative A*: heuristic weighted by the inverse obstacle rate, "
       "no_corner_cut, direct and midpoint shortcuts";
-  info.source = "paper 003 section 2 (eq. 3-6, sections 2.3-2.4); PLANNERS.md Alternative A*";
+  info.source = "paper 003 section 2 (eq. 3-6, sections 2.3-2.4); docs/PLANNERS.md Alternative A*";
   info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
   info.params = alt_astar_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {

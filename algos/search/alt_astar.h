@@ -1,5 +1,5 @@
 #pragma once
-// Alternative A* of paper 003 section 2 (PLANNERS.md "Alternative A*").
+// Alternative A* of paper 003 section 2 (docs/PLANNERS.md "Alternative A*").
 
 #include "algos/registry.h"
 

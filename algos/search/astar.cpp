@@ -49,7 +49,7 @@ PlannerInfo astar_planner() {
   PlannerInfo info;
   info.name = "astar";
   info.summary = "classic A*: 8-connected, f = g + h, closed set";
-  info.source = "PLANNERS.md A* (classic); the traditional A* baseline of papers 000-004";
+  info.source = "docs/PLANNERS.md A* (classic); the traditional A* baseline of papers 000-004";
   info.expanded_nodes_meaning =
       "cells taken off the open list and closed (goal included; stale duplicates not counted)";
   info.params = astar_decls().specs();

@@ -1,5 +1,5 @@
 #pragma once
-// Classic A* (PLANNERS.md "A* (classic)"): the "traditional A*" column of every paper.
+// Classic A* (docs/PLANNERS.md "A* (classic)"): the "traditional A*" column of every paper.
 
 #include "algos/registry.h"
 

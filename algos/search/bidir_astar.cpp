@@ -193,7 +193,7 @@ PlannerInfo bidir_astar_planner() {
   info.summary =
       "bidirectional A*: forward and backward searches alternate, stop when either "
       "list's min f reaches the best meeting cost; optimal";
-  info.source = "paper 002 baseline; PLANNERS.md Dijkstra, bidirectional A*";
+  info.source = "paper 002 baseline; docs/PLANNERS.md Dijkstra, bidirectional A*";
   info.expanded_nodes_meaning =
       "cells taken off either open list and closed (forward and backward counted separately)";
   info.params = bidir_decls().specs();

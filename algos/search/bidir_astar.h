@@ -1,5 +1,5 @@
 #pragma once
-// Bidirectional A* (paper 002's baseline; PLANNERS.md "Dijkstra, bidirectional A*").
+// Bidirectional A* (paper 002's baseline; docs/PLANNERS.md "Dijkstra, bidirectional A*").
 
 #include "algos/registry.h"
 

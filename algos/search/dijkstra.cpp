@@ -45,7 +45,7 @@ PlannerInfo dijkstra_planner() {
   PlannerInfo info;
   info.name = "dijkstra";
   info.summary = "Dijkstra: A* with the zero heuristic, 8-connected, optimal";
-  info.source = "PLANNERS.md Dijkstra; paper 002 baseline";
+  info.source = "docs/PLANNERS.md Dijkstra; paper 002 baseline";
   info.expanded_nodes_meaning =
       "cells taken off the open list and closed (goal included; stale duplicates not counted)";
   info.params = dijkstra_decls().specs();

@@ -1,5 +1,5 @@
 #pragma once
-// Dijkstra = A* with the zero heuristic (PLANNERS.md "Dijkstra, bidirectional A*"; paper 002's
+// Dijkstra = A* with the zero heuristic (docs/PLANNERS.md "Dijkstra, bidirectional A*"; paper 002's
 // baseline), and the engine's optimal-length reference.
 
 #include <optional>

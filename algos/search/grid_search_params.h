@@ -1,5 +1,5 @@
 #pragma once
-// The parameters every grid search declares the same way (PLANNERS.md "Common ground"):
+// The parameters every grid search declares the same way (docs/PLANNERS.md "Common ground"):
 // corner_rule, heuristic, diagonal_cost. A variant includes grid_search_decls() with its own
 // defaults, so names, ranges and docs never drift between A* variants.
 

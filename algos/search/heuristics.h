@@ -1,5 +1,5 @@
 #pragma once
-// Grid heuristics of PLANNERS.md "Common ground": the distance estimate from a cell to the goal,
+// Grid heuristics of docs/PLANNERS.md "Common ground": the distance estimate from a cell to the goal,
 // from the absolute coordinate differences (dx, dy) in cells. Each is also a tiny functor type so
 // the search core is instantiated per heuristic and the per-node call inlines to a few
 // instructions (no switch per node); with_heuristic() turns the runtime choice into that type once
@@ -51,7 +51,7 @@ struct OctileHeuristic {
 };
 // Paper 002 eq. 7 as printed: the octile weights swapped, i.e. the min(dx, dy) diagonal steps
 // weighted 1 and the |dx - dy| straight steps weighted by diagonal_cost. Kept so the misprint's
-// cost can be measured (PLANNERS.md); it is not admissible and not the paper's intent.
+// cost can be measured (docs/PLANNERS.md); it is not admissible and not the paper's intent.
 struct OctileAsPrintedHeuristic {
   double diagonal_cost = kSqrt2;
   double operator()(int dx, int dy) const {

@@ -118,7 +118,7 @@ PlannerInfo improved_astar_internal_planner() {
   info.summary =
       "paper 002 internal improved A*: no_squeeze, octile (D_diag 1.4), turning "
       "weight 1.2";
-  info.source = "paper 002 section 4.1 (Algorithm 1, eq. 6-10), Table 4; PLANNERS.md";
+  info.source = "paper 002 section 4.1 (Algorithm 1, eq. 6-10), Table 4; docs/PLANNERS.md";
   info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
   info.params = improved_internal_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
@@ -133,7 +133,7 @@ PlannerInfo improved_astar_planner() {
   info.summary =
       "paper 002 improved A*: the internal search, then midpoints, forward key "
       "points, obstacle-avoidance adjustment and quadratic Bezier corners";
-  info.source = "paper 002 sections 4.1-4.2 (Algorithms 1-2, eq. 6-14), Table 5; PLANNERS.md";
+  info.source = "paper 002 sections 4.1-4.2 (Algorithms 1-2, eq. 6-14), Table 5; docs/PLANNERS.md";
   info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
   info.params = improved_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {

@@ -148,7 +148,7 @@ PlannerInfo kin_astar_planner() {
       "paper 004 kinematic-constraint A*: five-direction search in open areas, "
       "weighted heuristic (1.5 + r/R), redundancy removal with a safety distance, "
       "clamped cubic B-spline";
-  info.source = "paper 004 section 2 (eq. 1, Table 1, appendix A); PLANNERS.md";
+  info.source = "paper 004 section 2 (eq. 1, Table 1, appendix A); docs/PLANNERS.md";
   info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
   info.params = kin_astar_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {

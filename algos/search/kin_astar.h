@@ -1,5 +1,5 @@
 #pragma once
-// Kinematic-constraint A* of paper 004 section 2 (PLANNERS.md "Kinematic-constraint A*").
+// Kinematic-constraint A* of paper 004 section 2 (docs/PLANNERS.md "Kinematic-constraint A*").
 
 #include <cstdint>
 

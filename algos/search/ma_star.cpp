@@ -90,7 +90,7 @@ PlannerInfo ma_star_planner() {
   info.summary =
       "MA*: f = B + C with B as printed (Euclidean from the start), collinear and "
       "turning-point removal around inflated obstacles";
-  info.source = "paper 000 section 4.1, steps 2-3 (eq. 4.1a-b, 5.1a-b); PLANNERS.md MA*";
+  info.source = "paper 000 section 4.1, steps 2-3 (eq. 4.1a-b, 5.1a-b); docs/PLANNERS.md MA*";
   info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included), as A*";
   info.params = ma_star_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {

@@ -1,5 +1,5 @@
 #pragma once
-// MA*, the Modified A* of paper 000 section 4.1 and steps 2-3 (PLANNERS.md "MA*").
+// MA*, the Modified A* of paper 000 section 4.1 and steps 2-3 (docs/PLANNERS.md "MA*").
 
 #include <memory>
 

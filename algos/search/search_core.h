@@ -1,6 +1,6 @@
 #pragma once
-// The one best-first grid search of the A* family (STYLE.md item 2, after warthog's
-// unidirectional_search): Dijkstra, A* and the A* variants of PLANNERS.md are small Policy types
+// The one best-first grid search of the A* family (docs/ARCHITECTURE.md "Style" item 2, after warthog's
+// unidirectional_search): Dijkstra, A* and the A* variants of docs/PLANNERS.md are small Policy types
 // plugged into grid_search(), never copies of its loop.
 //
 // The loop: poll the deadline every kDeadlineInterval expansions; pop the best open cell and
@@ -33,7 +33,7 @@
 //       neighbourhood is obstacle-free, kinematic A*'s five-direction case). Default 0xFF.
 //
 // (e) the corner rule and (f) diagonal_cost come in GridSearchSetup. (g) A Listener (default
-// NullListener, whose empty inline hooks compile away, STYLE.md item 3) sees every cell put on
+// NullListener, whose empty inline hooks compile away, docs/ARCHITECTURE.md "Style" item 3) sees every cell put on
 // the open list for the first time (generated, the source included), every expansion and every
 // relaxation, for counting or for recording a search picture.
 //
@@ -69,7 +69,7 @@
 namespace agv {
 
 inline constexpr int kNoDirection = 8;
-// Deadline poll period in expansions (STYLE.md item 7); a power of two.
+// Deadline poll period in expansions (docs/ARCHITECTURE.md "Style" item 7); a power of two.
 inline constexpr std::int64_t kDeadlineInterval = 1024;
 
 struct GridSearchSetup {

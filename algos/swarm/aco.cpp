@@ -326,7 +326,7 @@ PlannerInfo aco_planner() {
   info.kind = PlannerKind::swarm;
   info.name = "aco";
   info.summary = "ant colony (Ant System) on the 8-connected grid, paper 002 Table 2 defaults";
-  info.source = "PLANNERS.md Baselines; paper 002 section 5, Table 2; Dorigo et al. 1996";
+  info.source = "docs/PLANNERS.md Baselines; paper 002 section 5, Table 2; Dorigo et al. 1996";
   info.expanded_nodes_meaning = "ant steps: moves made by all ants of all iterations";
   info.stochastic = true;
   info.proves_no_path = false;  // gives up with limit after its budget

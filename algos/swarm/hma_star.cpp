@@ -6,7 +6,7 @@
 
 #include "algos/swarm/hma_star.h"
 
-// HMA* (paper 000 section 5, steps 8-13 and the pseudo-code; PLANNERS.md "HMA*"):
+// HMA* (paper 000 section 5, steps 8-13 and the pseudo-code; docs/PLANNERS.md "HMA*"):
 // 1. MA* (the ma_star planner, run as configured here) gives the key nodes P0..Pm: its search
 //    path after collinear (eq. 5.1a) and turning-point (eq. 5.1b) removal.
 // 2. Sliding window n = 0 .. m-2: a swarm re-places P(n+1) between P(n) and P(n+2). A particle
@@ -350,7 +350,7 @@ PlannerInfo hma_star_planner() {
   info.summary =
       "HMA*: MA* key nodes, then a sliding-window PSO with stochastic inertia weight "
       "and opposition-based learning re-placing each middle node";
-  info.source = "paper 000 section 5 (eq. 4.2a, 5.1c-5.1g, pseudo-code); PLANNERS.md HMA*";
+  info.source = "paper 000 section 5 (eq. 4.2a, 5.1c-5.1g, pseudo-code); docs/PLANNERS.md HMA*";
   info.expanded_nodes_meaning = "MA*'s search expansions (cells closed, goal included)";
   info.stochastic = true;
   info.params = hma_star_decls().specs();

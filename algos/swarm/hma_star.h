@@ -1,5 +1,5 @@
 #pragma once
-// HMA*, the Hybrid Modified A* of paper 000 section 5 (PLANNERS.md "HMA*"): the MA* path's key
+// HMA*, the Hybrid Modified A* of paper 000 section 5 (docs/PLANNERS.md "HMA*"): the MA* path's key
 // nodes, then a particle swarm with stochastic inertia weight re-placing the middle node of each
 // sliding window (P(n), P(n+2)).
 

@@ -1,4 +1,4 @@
-// The papers' baselines (PRM, RRT, RRT-Connect, ant colony) against truth (STYLE.md item 11):
+// The papers' baselines (PRM, RRT, RRT-Connect, ant colony) against truth (docs/ARCHITECTURE.md "Style" item 11):
 // every returned path validates on hundreds of random solvable maps, success rates are printed
 // (sampling planners may fail within their caps: that is data, not a bug), runs are reproducible
 // from the seed, PRM converges towards the any-angle optimum from above, ants never revisit a

@@ -1,4 +1,4 @@
-// The DWA local planner and the fusion planners against truth (STYLE.md item 11): the unicycle
+// The DWA local planner and the fusion planners against truth (docs/ARCHITECTURE.md "Style" item 11): the unicycle
 // integration is the closed-form arc, the dynamic window stays inside V_m n V_d, every chosen
 // velocity can stop before its rollout's first obstacle (V_a, checked against the exact
 // distance transform), fusion reaches the goal without collision on random solvable maps, a

@@ -1,4 +1,4 @@
-// The grid search core, A* and Dijkstra against known truth (STYLE.md item 11): the MovingAI
+// The grid search core, A* and Dijkstra against known truth (docs/ARCHITECTURE.md "Style" item 11): the MovingAI
 // optimal lengths, each other on random maps under every corner rule, and the legality of every
 // move of every returned path.
 

@@ -20,8 +20,9 @@ enum class Failure { none, no_path, limit, invalid_path, invalid_input };
 const char* to_string(Failure f);
 
 // Cooperative time limit: planners poll expired() every few hundred expansions or iterations
-// (docs/ARCHITECTURE.md "Style" item 7) and give up with Failure::limit. A planner may copy the request's deadline
-// into a sub-request (a fusion planner's global planner): copies share one limit.
+// (docs/ARCHITECTURE.md "Style" item 7) and give up with Failure::limit. A planner may copy the
+// request's deadline into a sub-request (a fusion planner's global planner): copies share one
+// limit.
 class Deadline {
  public:
   using Clock = std::chrono::steady_clock;

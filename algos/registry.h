@@ -1,17 +1,16 @@
 #pragma once
-// One explicit table of planners, one line per planner (docs/ARCHITECTURE.md "Style" item 6). A config names a
-// planner by its stable public name and sets any of its declared parameters.
+// One explicit table of planners, one line per planner (docs/ARCHITECTURE.md "Style" item 6). A
+// config names a planner by its stable public name and sets any of its declared parameters.
 
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "core/params.h"
 #include "algos/planner.h"
+#include "core/params.h"
 
 namespace agv {
 
@@ -21,10 +20,10 @@ enum class PlannerKind { grid_search, sampling, swarm, local };
 const char* to_string(PlannerKind kind);
 
 struct PlannerInfo {
-  std::string name;     // stable public name, e.g. "astar"
+  std::string name;  // stable public name, e.g. "astar"
   PlannerKind kind = PlannerKind::grid_search;
-  std::string summary;  // one line for `agvbench list`
-  std::string source;   // where it comes from, e.g. "paper 000 section 4.1"
+  std::string summary;                 // one line for `agvbench list`
+  std::string source;                  // where it comes from, e.g. "paper 000 section 4.1"
   std::string expanded_nodes_meaning;  // what expanded_nodes counts for this planner
   bool stochastic = false;             // draws from the run's RNG
   // Whether the planner proves that there is no path: where the goal cannot be reached it

@@ -34,7 +34,7 @@ constexpr std::uint8_t allowed_moves(std::uint8_t free_mask, CornerRule rule) {
     if (!(free_mask & (1U << d))) continue;
     const bool a = free_mask & (1U << k);
     const bool b = free_mask & (1U << ((k + 1) % 4));
-    const bool ok = rule == CornerRule::allow ? true
+    const bool ok = rule == CornerRule::allow        ? true
                     : rule == CornerRule::no_squeeze ? (a || b)
                                                      : (a && b);
     if (ok) allowed = static_cast<std::uint8_t>(allowed | (1U << d));
@@ -52,7 +52,7 @@ inline constexpr MoveTable kMovesAllow = make_move_table(CornerRule::allow);
 inline constexpr MoveTable kMovesNoSqueeze = make_move_table(CornerRule::no_squeeze);
 inline constexpr MoveTable kMovesNoCornerCut = make_move_table(CornerRule::no_corner_cut);
 inline const MoveTable& move_table(CornerRule rule) {
-  return rule == CornerRule::allow ? kMovesAllow
+  return rule == CornerRule::allow        ? kMovesAllow
          : rule == CornerRule::no_squeeze ? kMovesNoSqueeze
                                           : kMovesNoCornerCut;
 }

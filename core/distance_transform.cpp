@@ -156,9 +156,7 @@ double DistanceTransform::search(Point a, Point b, Candidate* cells, int count) 
   return best;
 }
 
-double DistanceTransform::clearance(Point p) const {
-  return segment_clearance(p, p);
-}
+double DistanceTransform::clearance(Point p) const { return segment_clearance(p, p); }
 
 double DistanceTransform::segment_clearance(Point a, Point b) const {
   auto inside = [this](Point p) {

@@ -34,7 +34,7 @@ Grid::Grid(int width, int height, double cell_edge)
     occupancy_[index(x, y)] = 1;
     const int bit = x + 1;
     bits_[static_cast<std::size_t>(y + 1) * words_per_row_ + bit / 64] |= std::uint64_t{1}
-                                                                           << (bit % 64);
+                                                                          << (bit % 64);
   };
   for (int x = -1; x <= width; ++x) {
     set_raw(x, -1);

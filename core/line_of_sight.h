@@ -76,8 +76,7 @@ SightHit check_segment(const Grid& grid, Point a, Point b, const SightRule& rule
 bool segment_free(const Grid& grid, Point a, Point b, const SightRule& rule = {});
 
 // The reference verdict (the walk of check_segment), kept for tests and benchmarks.
-inline bool segment_free_reference(const Grid& grid, Point a, Point b,
-                                   const SightRule& rule = {}) {
+inline bool segment_free_reference(const Grid& grid, Point a, Point b, const SightRule& rule = {}) {
   return !check_segment(grid, a, b, rule);
 }
 

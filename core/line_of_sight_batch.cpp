@@ -79,8 +79,13 @@ struct Lines {
   int c0, c1;
 
   Lines(const Walk& w, double slope_)
-      : ua(w.ua), va(w.va), ub(w.ub), vb(w.vb), slope(slope_),
-        c0(static_cast<int>(std::ceil(w.ua)) - 1), c1(static_cast<int>(std::floor(w.ub))) {}
+      : ua(w.ua),
+        va(w.va),
+        ub(w.ub),
+        vb(w.vb),
+        slope(slope_),
+        c0(static_cast<int>(std::ceil(w.ua)) - 1),
+        c1(static_cast<int>(std::floor(w.ub))) {}
 
   // v where the segment crosses u = X (X in [c0, c1 + 1]), and whether it passes through a
   // vertex there as an interior point: exactly the reference walk's vl / vr and flags.
@@ -98,8 +103,8 @@ struct Lines {
 // One column of the reference walk: its cells (side cells of vertex passes left out) and the
 // corner rule at its right vertex. Transposed, a column is a grid row: one masked word.
 template <bool kTransposed>
-bool column_hit(const Grid& grid, const Lines& lines, int i, double vl, bool left_vertex,
-                double vr, bool right_vertex, CornerRule rule) {
+bool column_hit(const Grid& grid, const Lines& lines, int i, double vl, bool left_vertex, double vr,
+                bool right_vertex, CornerRule rule) {
   int j_lo = static_cast<int>(std::ceil(std::min(vl, vr))) - 1;
   int j_hi = static_cast<int>(std::floor(std::max(vl, vr)));
   const bool rising = lines.slope > 0.0;
@@ -152,8 +157,11 @@ template <bool kTransposed>
 class MiddleColumns {
  public:
   MiddleColumns(const Grid& grid, const Lines& lines)
-      : bits_(grid.bit_row(-1)), words_(static_cast<std::size_t>(grid.words_per_row())),
-        lines_(lines), s_(lines.slope > 0.0 ? 1.0 : -1.0), flip_(lines.slope > 0.0 ? 0 : -1) {}
+      : bits_(grid.bit_row(-1)),
+        words_(static_cast<std::size_t>(grid.words_per_row())),
+        lines_(lines),
+        s_(lines.slope > 0.0 ? 1.0 : -1.0),
+        flip_(lines.slope > 0.0 ? 0 : -1) {}
 
   bool hit(int m0, int m1, CornerRule rule) const {
     int block = kMinBlock;
@@ -368,7 +376,8 @@ bool segment_free(const Grid& grid, Point a, Point b, const SightRule& rule) {
 void segments_free(const Grid& grid, std::span<const Point> a, std::span<const Point> b,
                    const SightRule& rule, std::span<std::uint8_t> out) {
   for (std::size_t i = 0; i < out.size(); i += sight_internal::kLanes) {
-    const int count = static_cast<int>(std::min<std::size_t>(sight_internal::kLanes, out.size() - i));
+    const int count =
+        static_cast<int>(std::min<std::size_t>(sight_internal::kLanes, out.size() - i));
     batch_free(grid, a.data() + i, b.data() + i, count, rule, out.data() + i);
   }
 }
@@ -378,7 +387,8 @@ void segments_free_from(const Grid& grid, Point from, std::span<const Point> to,
   Point froms[sight_internal::kLanes];
   std::fill(std::begin(froms), std::end(froms), from);
   for (std::size_t i = 0; i < out.size(); i += sight_internal::kLanes) {
-    const int count = static_cast<int>(std::min<std::size_t>(sight_internal::kLanes, out.size() - i));
+    const int count =
+        static_cast<int>(std::min<std::size_t>(sight_internal::kLanes, out.size() - i));
     batch_free(grid, froms, to.data() + i, count, rule, out.data() + i);
   }
 }
@@ -386,7 +396,8 @@ void segments_free_from(const Grid& grid, Point from, std::span<const Point> to,
 void points_free(const Grid& grid, std::span<const Point> points, const SightRule& rule,
                  std::span<std::uint8_t> out) {
   for (std::size_t i = 0; i < out.size(); i += sight_internal::kLanes) {
-    const int count = static_cast<int>(std::min<std::size_t>(sight_internal::kLanes, out.size() - i));
+    const int count =
+        static_cast<int>(std::min<std::size_t>(sight_internal::kLanes, out.size() - i));
     batch_free(grid, points.data() + i, points.data() + i, count, rule, out.data() + i);
   }
 }

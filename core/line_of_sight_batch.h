@@ -23,8 +23,8 @@
 #include <cstdint>
 #include <span>
 
-#include "core/line_of_sight.h"
 #include "core/grid.h"
+#include "core/line_of_sight.h"
 
 namespace agv {
 

@@ -139,8 +139,8 @@ Params Params::resolve(const std::vector<ParamSpec>& specs, const json& given,
       if (spec == nullptr) {
         std::string known;
         for (const auto& s : specs) known += (known.empty() ? "" : ", ") + s.name;
-        throw InputError(where + "." + key + ": unknown parameter (known: " +
-                         (known.empty() ? "none" : known) + ")");
+        throw InputError(where + "." + key +
+                         ": unknown parameter (known: " + (known.empty() ? "none" : known) + ")");
       }
       p.values_[key] = check_value(*spec, value, where + "." + key);
     }

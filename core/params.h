@@ -8,13 +8,12 @@
 
 #include <functional>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
 
@@ -75,10 +74,9 @@ class ParamDecls {
   template <class Field>
   ParamDecls& number(std::string name, Field field, double def, double lo, double hi,
                      std::string doc) {
-    return add(ParamSpec::number(std::move(name), def, lo, hi, std::move(doc)),
-               [field](Options& o, const nlohmann::json& v) {
-                 std::invoke(field, o) = v.get<double>();
-               });
+    return add(
+        ParamSpec::number(std::move(name), def, lo, hi, std::move(doc)),
+        [field](Options& o, const nlohmann::json& v) { std::invoke(field, o) = v.get<double>(); });
   }
   template <class Field>
   ParamDecls& integer(std::string name, Field field, long long def, long long lo, long long hi,
@@ -86,16 +84,15 @@ class ParamDecls {
     return add(ParamSpec::integer(std::move(name), def, lo, hi, std::move(doc)),
                [field](Options& o, const nlohmann::json& v) {
                  auto& target = std::invoke(field, o);
-                 target = static_cast<std::remove_reference_t<decltype(target)>>(
-                     v.get<long long>());
+                 target =
+                     static_cast<std::remove_reference_t<decltype(target)>>(v.get<long long>());
                });
   }
   template <class Field>
   ParamDecls& boolean(std::string name, Field field, bool def, std::string doc) {
-    return add(ParamSpec::boolean(std::move(name), def, std::move(doc)),
-               [field](Options& o, const nlohmann::json& v) {
-                 std::invoke(field, o) = v.get<bool>();
-               });
+    return add(
+        ParamSpec::boolean(std::move(name), def, std::move(doc)),
+        [field](Options& o, const nlohmann::json& v) { std::invoke(field, o) = v.get<bool>(); });
   }
   // A choice among named values of E (an enum, or std::string for free-standing names).
   template <class Field, class E>
@@ -124,9 +121,8 @@ class ParamDecls {
   ParamDecls& include(Member member, const ParamDecls<Sub>& group) {
     for (std::size_t i = 0; i < group.specs().size(); ++i) {
       auto set = group.setter(i);
-      add(group.specs()[i], [member, set](Options& o, const nlohmann::json& v) {
-        set(std::invoke(member, o), v);
-      });
+      add(group.specs()[i],
+          [member, set](Options& o, const nlohmann::json& v) { set(std::invoke(member, o), v); });
     }
     return *this;
   }

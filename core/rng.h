@@ -5,9 +5,8 @@
 // code: the standard distributions differ between standard libraries.
 
 #include <cstdint>
-#include <string_view>
-
 #include <pcg_random.hpp>
+#include <string_view>
 
 namespace agv {
 

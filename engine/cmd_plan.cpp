@@ -26,7 +26,8 @@ GridSize parse_size(const std::string& text) {
   if (std::sscanf(text.c_str(), "%d%c%d%n", &w, &x, &h, &used) == 3 && (x == 'x' || x == 'X') &&
       used == static_cast<int>(text.size()))
     return {w, h};
-  if (std::sscanf(text.c_str(), "%d%n", &w, &used) == 1 && used == static_cast<int>(text.size())) return {w, w};
+  if (std::sscanf(text.c_str(), "%d%n", &w, &used) == 1 && used == static_cast<int>(text.size()))
+    return {w, w};
   throw InputError("--size: expected N or WxH, got \"" + text + "\"");
 }
 
@@ -187,7 +188,8 @@ int command_plan(const PlanCommand& cmd) {
     SweepCell replay;
     replay.key = map_doc.value("cell", cmd.map_file);
     Rng rng = run_rng(static_cast<std::uint64_t>(cmd.seed), replay, cmd.map_index, infos[i]->name);
-    outputs.push_back(execute_run(*c.planner, ref, rng, scratch, Deadline::never(), MotionTimeParams{}));
+    outputs.push_back(
+        execute_run(*c.planner, ref, rng, scratch, Deadline::never(), MotionTimeParams{}));
     const RunOutput& o = outputs.back();
     nlohmann::json metrics = nlohmann::json::object();
     for (std::size_t m = 0; m < kRunMetricNames.size(); ++m)
@@ -229,7 +231,8 @@ int command_plan(const PlanCommand& cmd) {
     for (std::size_t m = 0; m < kRunMetricNames.size(); ++m)
       if (std::isfinite(o.metrics[m]))
         std::cout << "    " << kRunMetricNames[m] << " = " << o.metrics[m] << "\n";
-    for (const auto& [name, value] : o.result.extra) std::cout << "    " << name << " = " << value << "\n";
+    for (const auto& [name, value] : o.result.extra)
+      std::cout << "    " << name << " = " << value << "\n";
     std::cout << "    timing: plan_time_us = " << static_cast<double>(o.plan_time_ns) / 1e3;
     for (const auto& ph : o.result.phases)
       std::cout << ", " << ph.name << "_us = " << static_cast<double>(ph.ns) / 1e3;

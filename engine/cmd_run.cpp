@@ -3,9 +3,9 @@
 
 #include <atomic>
 #include <cstdio>
-#include <tuple>
 #include <filesystem>
 #include <iostream>
+#include <tuple>
 
 #include "algos/registry.h"
 #include "engine/commands.h"
@@ -77,9 +77,12 @@ int command_run(const RunCommand& cmd) {
   options.progress = !cmd.quiet;
   // A resumed sweep appends to the journal it restores: run_sweep refuses another --runs-out
   // (and the config's "runs" field does not apply).
-  options.runs_path = !cmd.runs_out.empty() ? cmd.runs_out : cmd.resume.empty() ? config.runs_path : "";
+  options.runs_path = !cmd.runs_out.empty() ? cmd.runs_out
+                      : cmd.resume.empty()  ? config.runs_path
+                                            : "";
   options.resume_path = cmd.resume;
-  if (!cmd.shard.empty()) std::tie(options.shard_index, options.shard_count) = parse_shard(cmd.shard);
+  if (!cmd.shard.empty())
+    std::tie(options.shard_index, options.shard_count) = parse_shard(cmd.shard);
   options.isolation.enabled = cmd.isolate;
   options.isolation.hard_limit_s = cmd.isolate_timeout_s;
   options.isolation.memory_mb = cmd.isolate_memory_mb;
@@ -99,19 +102,20 @@ int command_run(const RunCommand& cmd) {
                  static_cast<long long>(results.executed_runs),
                  static_cast<long long>(results.restored_runs), config.report_path.c_str(),
                  !options.resume_path.empty() ? options.resume_path.c_str()
-                 : options.runs_path.empty()   ? "JOURNAL (none was written: use --runs-out)"
-                                               : options.runs_path.c_str());
+                 : options.runs_path.empty()  ? "JOURNAL (none was written: use --runs-out)"
+                                              : options.runs_path.c_str());
     return 130;
   }
   if (!cmd.quiet) {
     std::cout << summary_table(config, results);
-    std::printf("\n%lld runs in %.2f s on %d threads (%.0f runs/s)%s; report: %s\n",
-                static_cast<long long>(results.executed_runs), results.wall_s, results.threads,
-                results.wall_s > 0 ? static_cast<double>(results.executed_runs) / results.wall_s : 0.0,
-                results.restored_runs > 0
-                    ? (", " + std::to_string(results.restored_runs) + " restored").c_str()
-                    : "",
-                config.report_path.c_str());
+    std::printf(
+        "\n%lld runs in %.2f s on %d threads (%.0f runs/s)%s; report: %s\n",
+        static_cast<long long>(results.executed_runs), results.wall_s, results.threads,
+        results.wall_s > 0 ? static_cast<double>(results.executed_runs) / results.wall_s : 0.0,
+        results.restored_runs > 0
+            ? (", " + std::to_string(results.restored_runs) + " restored").c_str()
+            : "",
+        config.report_path.c_str());
   }
   return 0;
 }

@@ -123,7 +123,8 @@ JournalStats restore_journal(const std::string& path, const std::string& config_
     // Records are written whole, newline included: a complete line that does not parse is a
     // damaged journal, not a kill's doing.
     json rec = json::parse(line, nullptr, false);
-    if (rec.is_discarded() || !rec.is_object()) throw InputError(where + ": malformed journal record");
+    if (rec.is_discarded() || !rec.is_object())
+      throw InputError(where + ": malformed journal record");
     if (restorer.restore(rec, where)) {
       ++stats.records;
     } else {

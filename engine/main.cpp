@@ -1,12 +1,11 @@
 // agvbench: sweeps, single plans, MovingAI scenarios and the planner registry.
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <exception>
 
+#include "core/input_error.h"
 #include "engine/commands.h"
 #include "engine/isolated_worker.h"
-#include "core/input_error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"agvbench: a parallel benchmark engine for AGV grid path planners"};
@@ -15,16 +14,20 @@ int main(int argc, char** argv) {
   agv::RunCommand run;
   auto* run_cmd = app.add_subcommand("run", "run a sweep and write its JSON report");
   run_cmd->add_option("config", run.config, "sweep config (default: configs/default.json)");
-  run_cmd->add_option("--threads", run.threads, "worker threads (0 = all)")->check(CLI::Range(0, 4096));
+  run_cmd->add_option("--threads", run.threads, "worker threads (0 = all)")
+      ->check(CLI::Range(0, 4096));
   run_cmd->add_option("--out", run.out, "report path (overrides the config)");
   run_cmd->add_option("--runs-out", run.runs_out, "JSON Lines file of per-run records");
-  run_cmd->add_option("--resume", run.resume, "journal of an interrupted run: skip its runs, append to it");
+  run_cmd->add_option("--resume", run.resume,
+                      "journal of an interrupted run: skip its runs, append to it");
   run_cmd->add_option("--shard", run.shard, "i/N: run only the i-th of N slices (split by map)");
   run_cmd->add_flag("--isolate", run.isolate, "run planners in worker processes (fault isolation)");
-  run_cmd->add_option("--isolate-timeout", run.isolate_timeout_s,
-                      "hard wall-clock limit per run in seconds (default 2x time_limit_s + 1)")
+  run_cmd
+      ->add_option("--isolate-timeout", run.isolate_timeout_s,
+                   "hard wall-clock limit per run in seconds (default 2x time_limit_s + 1)")
       ->check(CLI::PositiveNumber);
-  run_cmd->add_option("--isolate-memory", run.isolate_memory_mb, "address-space cap per worker, MiB")
+  run_cmd
+      ->add_option("--isolate-memory", run.isolate_memory_mb, "address-space cap per worker, MiB")
       ->check(CLI::Range(64LL, 1LL << 40));
   run_cmd->add_flag("--quiet", run.quiet, "no progress meter and no summary table");
 
@@ -32,7 +35,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> merge_journals;
   auto* merge_cmd = app.add_subcommand("merge", "build one report from shard or partial journals");
   merge_cmd->add_option("journals", merge_journals, "JSON Lines journals")->required();
-  merge_cmd->add_option("--config", merge_config, "the sweep config the journals belong to")->required();
+  merge_cmd->add_option("--config", merge_config, "the sweep config the journals belong to")
+      ->required();
   merge_cmd->add_option("--out", merge_out, "report path (default: the config's)");
 
   long long worker_memory = 0;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "engine/statistics.h"
 #include "core/distance_transform.h"
+#include "engine/statistics.h"
 
 namespace agv {
 

@@ -1,7 +1,7 @@
 #pragma once
-// The static-planner metrics of docs/METRICS.md, computed by the engine from a validated path (never
-// reported by the planner), so every planner is measured by one ruler. optimality_ratio needs
-// the Dijkstra reference and is computed by the runner.
+// The static-planner metrics of docs/METRICS.md, computed by the engine from a validated path
+// (never reported by the planner), so every planner is measured by one ruler. optimality_ratio
+// needs the Dijkstra reference and is computed by the runner.
 
 #include <array>
 #include <cstdint>
@@ -51,8 +51,8 @@ inline constexpr double kTurnThreshold = 1e-9;  // rad, docs/METRICS.md "turns"
 // `waypoints` >= 0 overrides path_nodes (and its motion-time term) for a path that is a sampled
 // curve: docs/METRICS.md counts waypoints before sampling.
 PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
-                                 const MotionTimeParams& motion = {},
-                                 std::int64_t plan_time_ns = 0, std::int64_t waypoints = -1);
+                                 const MotionTimeParams& motion = {}, std::int64_t plan_time_ns = 0,
+                                 std::int64_t waypoints = -1);
 
 // (name, value) in a fixed order, for the aggregator and the per-run records.
 // Sum of segment lengths in cells, compensated: the same length compute_path_metrics reports.

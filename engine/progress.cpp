@@ -47,8 +47,8 @@ void ProgressMeter::draw() const {
   for (int i = 0; i < kWidth; ++i) bar[i] = i < filled ? '#' : '.';
   bar[kWidth] = '\0';
   std::fprintf(stderr, "\r[%s] %5.1f%%  %lld/%lld maps  %.0fs elapsed, ~%.0fs left\033[K", bar,
-               100.0 * frac, static_cast<long long>(done), static_cast<long long>(total_),
-               elapsed, eta);
+               100.0 * frac, static_cast<long long>(done), static_cast<long long>(total_), elapsed,
+               eta);
   std::fflush(stderr);
 }
 

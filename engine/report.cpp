@@ -60,8 +60,8 @@ std::vector<double> successful_values(const SweepResults& r, const SweepCell& ce
                                       std::size_t planner, std::size_t metric) {
   std::vector<double> out;
   for (int m = 0; m < r.plan.maps_per_cell; ++m) {
-    const RunSlot& s = r.run(static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m,
-                             planner);
+    const RunSlot& s =
+        r.run(static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m, planner);
     if (s.done && s.outcome == Outcome::success && std::isfinite(s.metrics[metric]))
       out.push_back(s.metrics[metric]);
   }
@@ -99,16 +99,17 @@ json planner_cell_json(const SweepResults& r, const SweepCell& cell, std::size_t
   for (const auto& [name, values] : extras) metrics[name] = summary_json(summarize(values));
   json phase_json = json::object();
   for (const auto& [name, values] : phases) phase_json[name] = summary_json(summarize(values));
-  return {{"planner", entry.label},
-          {"name", entry.name},
-          {"runs", runs},
-          {"successes", successes},
-          {"success_rate", runs > 0 ? json(static_cast<double>(successes) / static_cast<double>(runs))
-                                    : json(nullptr)},
-          {"success_ci95", {number_or_null(wilson.lo), number_or_null(wilson.hi)}},
-          {"failures", failures},
-          {"metrics", metrics},
-          {"timing", {{"plan_time_ns", summary_json(summarize(plan_times))}, {"phases", phase_json}}}};
+  return {
+      {"planner", entry.label},
+      {"name", entry.name},
+      {"runs", runs},
+      {"successes", successes},
+      {"success_rate",
+       runs > 0 ? json(static_cast<double>(successes) / static_cast<double>(runs)) : json(nullptr)},
+      {"success_ci95", {number_or_null(wilson.lo), number_or_null(wilson.hi)}},
+      {"failures", failures},
+      {"metrics", metrics},
+      {"timing", {{"plan_time_ns", summary_json(summarize(plan_times))}, {"phases", phase_json}}}};
 }
 
 // Pairs over maps where both planners succeeded, in map order.
@@ -122,10 +123,10 @@ void paired_values(const SweepResults& r, const SweepCell& cell, std::size_t a, 
     const RunSlot& sb = r.run(task, b);
     if (!sa.done || !sb.done || sa.outcome != Outcome::success || sb.outcome != Outcome::success)
       continue;
-    const double x = metric < kRunMetricNames.size() ? sa.metrics[metric]
-                                                     : static_cast<double>(sa.plan_time_ns);
-    const double y = metric < kRunMetricNames.size() ? sb.metrics[metric]
-                                                     : static_cast<double>(sb.plan_time_ns);
+    const double x =
+        metric < kRunMetricNames.size() ? sa.metrics[metric] : static_cast<double>(sa.plan_time_ns);
+    const double y =
+        metric < kRunMetricNames.size() ? sb.metrics[metric] : static_cast<double>(sb.plan_time_ns);
     if (std::isfinite(x) && std::isfinite(y)) {
       va.push_back(x);
       vb.push_back(y);
@@ -147,10 +148,11 @@ json paired_cell_json(const SweepConfig& config, const SweepResults& r, const Sw
       metrics[std::string(name)] = paired_json(compare_paired(va, vb, kTieTolerance));
     }
     paired_values(r, cell, p, base, kRunMetricNames.size(), va, vb);
-    out.push_back({{"planner", r.labels[p]},
-                   {"baseline", r.labels[base]},
-                   {"metrics", metrics},
-                   {"timing", {{"plan_time_ns", paired_json(compare_paired(va, vb, kTieTolerance))}}}});
+    out.push_back(
+        {{"planner", r.labels[p]},
+         {"baseline", r.labels[base]},
+         {"metrics", metrics},
+         {"timing", {{"plan_time_ns", paired_json(compare_paired(va, vb, kTieTolerance))}}}});
   }
   return out;
 }
@@ -172,7 +174,8 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
     json planners = json::array();
     // A planner scoped out of this cell has no entry in it (rather than one with no runs).
     for (std::size_t p = 0; p < r.labels.size(); ++p)
-      if (r.maps_of(cell, p) > 0) planners.push_back(planner_cell_json(r, cell, p, config.planners[p]));
+      if (r.maps_of(cell, p) > 0)
+        planners.push_back(planner_cell_json(r, cell, p, config.planners[p]));
     cells.push_back({{"cell", cell.key},
                      {"generator", cell.generator},
                      {"width", cell.size.width},
@@ -185,23 +188,25 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
                      {"paired", paired_cell_json(config, r, cell)}});
   }
   const Coverage coverage = coverage_of(r);
-  json report = {{"schema_version", kReportSchemaVersion},
-          {"tool", "agvbench"},
-          {"config", config_as_run(config)},
-          {"complete", r.complete},
-          {"coverage",
-           {{"runs_expected", coverage.runs_expected},
-            {"runs_present", coverage.runs_present},
-            {"maps_missing", coverage.maps_missing}}},
-          {"totals",
-           {{"cells", r.plan.cells.size()}, {"maps", r.plan.map_tasks()}, {"runs", coverage.runs_present}}},
-          {"cells", cells},
-          {"environment", environment_json(r.threads)},
-          {"timing",
-           {{"wall_s", r.wall_s},
-            {"executed_runs", r.executed_runs},
-            {"runs_per_s",
-             r.wall_s > 0 ? static_cast<double>(r.executed_runs) / r.wall_s : 0.0}}}};
+  json report = {
+      {"schema_version", kReportSchemaVersion},
+      {"tool", "agvbench"},
+      {"config", config_as_run(config)},
+      {"complete", r.complete},
+      {"coverage",
+       {{"runs_expected", coverage.runs_expected},
+        {"runs_present", coverage.runs_present},
+        {"maps_missing", coverage.maps_missing}}},
+      {"totals",
+       {{"cells", r.plan.cells.size()},
+        {"maps", r.plan.map_tasks()},
+        {"runs", coverage.runs_present}}},
+      {"cells", cells},
+      {"environment", environment_json(r.threads)},
+      {"timing",
+       {{"wall_s", r.wall_s},
+        {"executed_runs", r.executed_runs},
+        {"runs_per_s", r.wall_s > 0 ? static_cast<double>(r.executed_runs) / r.wall_s : 0.0}}}};
   if (r.shard_count > 1) report["shard"] = {{"index", r.shard_index}, {"count", r.shard_count}};
   return report;
 }

@@ -3,9 +3,8 @@
 // timing lives under a key named `timing`, the machine under `environment`; everything else is a
 // pure function of the config and its seed.
 
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "engine/sweep_runner.h"
 

@@ -18,20 +18,21 @@ json run_record(const std::string& config_hash, std::uint64_t seed, const SweepC
     metrics[name] = std::isfinite(value) ? json(value) : json(nullptr);
   json phases = json::object();
   for (const auto& p : run.result.phases) phases[p.name] = p.ns;
-  json rec = {{"task_id", task_id(config_hash, cell, map_index, planner.label)},
-              {"config_hash", config_hash},
-              {"planner", planner.label},
-              {"planner_name", planner.name},
-              {"generator", cell.generator},
-              {"size", {cell.size.width, cell.size.height}},
-              {"density", cell.density},
-              {"cell", cell.key},
-              {"map_index", map_index},
-              {"seed", seed},
-              {"map", {{"rejections", map.rejections}, {"obstacle_fraction", map.obstacle_fraction}}},
-              {"outcome", std::string(to_string(run.outcome))},
-              {"metrics", metrics},
-              {"timing", {{"plan_time_ns", run.plan_time_ns}, {"phases", phases}}}};
+  json rec = {
+      {"task_id", task_id(config_hash, cell, map_index, planner.label)},
+      {"config_hash", config_hash},
+      {"planner", planner.label},
+      {"planner_name", planner.name},
+      {"generator", cell.generator},
+      {"size", {cell.size.width, cell.size.height}},
+      {"density", cell.density},
+      {"cell", cell.key},
+      {"map_index", map_index},
+      {"seed", seed},
+      {"map", {{"rejections", map.rejections}, {"obstacle_fraction", map.obstacle_fraction}}},
+      {"outcome", std::string(to_string(run.outcome))},
+      {"metrics", metrics},
+      {"timing", {{"plan_time_ns", run.plan_time_ns}, {"phases", phases}}}};
   if (!run.message.empty()) rec["message"] = run.message;
   return rec;
 }

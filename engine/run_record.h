@@ -2,16 +2,15 @@
 // One JSON Lines record per run: enough to replay the run (config hash, cell, seed, map index,
 // planner label and parameters) and to rebuild its slot in the sweep (outcome, metrics, timing).
 
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "engine/sweep_runner.h"
 
 namespace agv {
 
-nlohmann::json run_record(const std::string& config_hash, std::uint64_t seed,
-                          const SweepCell& cell, int map_index, const PlannerEntry& planner,
-                          const MapSlot& map, const RunOutput& run);
+nlohmann::json run_record(const std::string& config_hash, std::uint64_t seed, const SweepCell& cell,
+                          int map_index, const PlannerEntry& planner, const MapSlot& map,
+                          const RunOutput& run);
 
 }  // namespace agv

@@ -79,8 +79,7 @@ class ObjectReader {
   }
   static long long check_integer(const json& v, const std::string& field, long long lo,
                                  long long hi) {
-    if (!v.is_number_integer())
-      throw InputError(field + ": expected an integer, got " + v.dump());
+    if (!v.is_number_integer()) throw InputError(field + ": expected an integer, got " + v.dump());
     const auto x = v.get<long long>();
     if (x < lo || x > hi) {
       throw InputError(field + ": " + v.dump() + " is outside [" + std::to_string(lo) + ", " +
@@ -143,8 +142,8 @@ void parse_map_options(const json& j, MapSpec& map) {
   map.endpoints = endpoints == "corners" ? EndpointMode::corners : EndpointMode::random;
   map.min_distance = r.number("min_distance", 0.0, 0.0, 1e6);
   map.require_solvable = r.boolean("require_solvable", true);
-  map.solvable_rule = *corner_rule_from_string(r.choice(
-      "solvable_rule", "no_corner_cut", {"allow", "no_squeeze", "no_corner_cut"}));
+  map.solvable_rule = *corner_rule_from_string(
+      r.choice("solvable_rule", "no_corner_cut", {"allow", "no_squeeze", "no_corner_cut"}));
   map.max_attempts = static_cast<int>(r.integer("max_attempts", 1000, 1, 1000000));
   map.cell_edge = r.number("cell_edge", 1.0, 1e-6, 1e6);
   r.finish();
@@ -260,7 +259,9 @@ std::vector<PlannerEntry> parse_planners(ObjectReader& r, const SweepConfig& swe
       if (p.has("only")) e.only = parse_scope(p.raw("only"), where, sweep);
       p.finish();
     } else {
-      throw InputError(where + ": expected a planner name or {\"name\": ..., \"params\": {...}, \"only\": {...}}");
+      throw InputError(
+          where +
+          ": expected a planner name or {\"name\": ..., \"params\": {...}, \"only\": {...}}");
     }
     if (e.label.empty()) e.label = e.name;
     if (!labels.insert(e.label).second)
@@ -295,7 +296,8 @@ SweepConfig parse_config(const json& j) {
   } else {
     bool found = false;
     for (const auto& p : c.planners) found = found || p.label == c.baseline;
-    if (!found) throw InputError("baseline: \"" + c.baseline + "\" is not a planner label of this sweep");
+    if (!found)
+      throw InputError("baseline: \"" + c.baseline + "\" is not a planner label of this sweep");
   }
   for (const auto& p : c.planners)
     if (p.label == c.baseline && !p.only.everywhere())

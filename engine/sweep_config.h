@@ -59,7 +59,7 @@ struct SweepConfig {
   int maps_per_cell = 100;
   MapSpec map;  // endpoints, require_solvable, ...; generator, shape, size, density per cell
   std::vector<PlannerEntry> planners;
-  std::string baseline;  // planner label the paired comparisons use
+  std::string baseline;        // planner label the paired comparisons use
   double time_limit_s = 10.0;  // per run, cooperative
   MotionTimeParams motion;
   // Execution settings: they change how a sweep runs, never what it reports.

@@ -64,8 +64,7 @@ Rng map_rng(std::uint64_t seed, const SweepCell& cell, int map_index) {
 }
 
 Rng run_rng(std::uint64_t seed, const SweepCell& cell, int map_index, const std::string& label) {
-  return Rng::for_run(seed, static_cast<std::uint64_t>(map_index),
-                      "run|" + cell.key + "|" + label);
+  return Rng::for_run(seed, static_cast<std::uint64_t>(map_index), "run|" + cell.key + "|" + label);
 }
 
 std::string task_id(const std::string& config_hash, const SweepCell& cell, int map_index,

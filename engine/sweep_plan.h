@@ -23,9 +23,7 @@ struct SweepCell {
 struct SweepPlan {
   std::vector<SweepCell> cells;
   int maps_per_cell = 0;
-  std::int64_t map_tasks() const {
-    return static_cast<std::int64_t>(cells.size()) * maps_per_cell;
-  }
+  std::int64_t map_tasks() const { return static_cast<std::int64_t>(cells.size()) * maps_per_cell; }
   // Map task t = cell t / maps_per_cell, map index t % maps_per_cell.
   const SweepCell& cell_of(std::int64_t task) const { return cells[task / maps_per_cell]; }
   int map_index_of(std::int64_t task) const { return static_cast<int>(task % maps_per_cell); }

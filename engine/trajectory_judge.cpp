@@ -42,7 +42,8 @@ std::string text(const char* format, double a, double b = 0.0, double c = 0.0) {
 std::string check_shape(const Grid& grid, Cell start, const Trajectory& tr) {
   const std::size_t n = tr.position.size();
   if (n == 0) return "trajectory: no samples";
-  if (tr.t.size() != n || tr.heading.size() != n) return "trajectory: t/position/heading sizes differ";
+  if (tr.t.size() != n || tr.heading.size() != n)
+    return "trajectory: t/position/heading sizes differ";
   if (tr.v.size() != n - 1 || tr.w.size() != n - 1)
     return "trajectory: expected one (v, w) command per interval";
   if (!(tr.robot_radius > 0.0) || !std::isfinite(tr.robot_radius))
@@ -134,9 +135,10 @@ TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, cons
       const double u = segment_cell_distance(a, b, c);
       min_static = std::min(min_static, u);
       if (u < r - kContactTolerance)
-        collide(Outcome::collision_unknown,
-                text("robot disc meets an unknown cell by t = %.2f s (clearance %.4f < radius %.4f)",
-                     time, u, r));
+        collide(
+            Outcome::collision_unknown,
+            text("robot disc meets an unknown cell by t = %.2f s (clearance %.4f < radius %.4f)",
+                 time, u, r));
     }
     // Moving discs.
     for (const auto& ob : tr.obstacles) {
@@ -161,9 +163,10 @@ TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, cons
         out.outcome = Outcome::success;
       } else {
         out.outcome = Outcome::invalid_path;
-        out.message = text("trajectory claims to reach the goal but ends %.3f cells from it "
-                           "(tolerance %.3f)",
-                           to_goal, tr.goal_tolerance);
+        out.message = text(
+            "trajectory claims to reach the goal but ends %.3f cells from it "
+            "(tolerance %.3f)",
+            to_goal, tr.goal_tolerance);
       }
     } else if (tr.end_reason == "timeout") {
       out.outcome = Outcome::sim_timeout;
@@ -171,9 +174,10 @@ TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, cons
                          tr.t.back(), to_goal);
     } else if (tr.end_reason == "stuck") {
       out.outcome = Outcome::stuck;
-      out.message = text("no admissible moving velocity for too long at t = %.1f s, %.2f cells "
-                         "from the goal",
-                         tr.t.back(), to_goal);
+      out.message = text(
+          "no admissible moving velocity for too long at t = %.1f s, %.2f cells "
+          "from the goal",
+          tr.t.back(), to_goal);
     } else if (tr.end_reason == "contact") {
       out.outcome = Outcome::invalid_path;
       out.message = "the planner reported a contact that the engine's judge does not confirm";

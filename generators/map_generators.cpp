@@ -56,8 +56,8 @@ Params validate(const MapSpec& s, const GeneratorInfo*& info) {
   }
   const double diagonal = std::hypot(s.width - 1.0, s.height - 1.0);
   if (!(s.min_distance >= 0.0 && s.min_distance <= diagonal)) {
-    throw std::invalid_argument(cat("min_distance: ", s.min_distance, " is outside [0, ",
-                                    diagonal, "] (the ", s.width, "x", s.height,
+    throw std::invalid_argument(cat("min_distance: ", s.min_distance, " is outside [0, ", diagonal,
+                                    "] (the ", s.width, "x", s.height,
                                     " grid's corner-to-corner distance)"));
   }
   if (s.max_attempts < 1) {
@@ -131,8 +131,8 @@ MapInstance make_map(const MapSpec& spec, Rng& rng) {
     endpoints_failed = false;
     if (spec.require_solvable &&
         !connected(canvas.data(), canvas.stride(), canvas.padded_size(),
-                   canvas.index(start.x, start.y), canvas.index(goal.x, goal.y),
-                   spec.solvable_rule, scratch)) {
+                   canvas.index(start.x, start.y), canvas.index(goal.x, goal.y), spec.solvable_rule,
+                   scratch)) {
       continue;
     }
     MapInstance out{Grid(spec.width, spec.height, spec.cell_edge), start, goal, attempt};
@@ -143,16 +143,16 @@ MapInstance make_map(const MapSpec& spec, Rng& rng) {
     }
     return out;
   }
-  const std::string what = cat(spec.generator, " ", spec.width, "x", spec.height, " at density ",
-                               spec.density);
+  const std::string what =
+      cat(spec.generator, " ", spec.width, "x", spec.height, " at density ", spec.density);
   if (endpoints_failed) {
-    throw std::runtime_error(cat("random endpoints: no two free cells min_distance = ",
-                                 spec.min_distance, " apart found on ", spec.max_attempts,
-                                 " maps (", what, ")"));
+    throw std::runtime_error(
+        cat("random endpoints: no two free cells min_distance = ", spec.min_distance,
+            " apart found on ", spec.max_attempts, " maps (", what, ")"));
   }
   throw std::runtime_error(cat("require_solvable: start and goal not connected under ",
-                               to_string(spec.solvable_rule), " in ", spec.max_attempts,
-                               " maps (", what, ")"));
+                               to_string(spec.solvable_rule), " in ", spec.max_attempts, " maps (",
+                               what, ")"));
 }
 
 }  // namespace agv

@@ -121,8 +121,7 @@ Grid parse_map(std::istream& in, const std::string& name) {
   Grid grid(width, height);
   for (int y = 0; y < height; ++y) {
     if (!reader.next(text)) {
-      reader.fail(reader.line() + 1,
-                  cat("file ends after ", y, " map rows, expected ", height));
+      reader.fail(reader.line() + 1, cat("file ends after ", y, " map rows, expected ", height));
     }
     if (std::ssize(text) != width) {
       reader.fail(cat("map row ", y, " has ", text.size(), " characters, expected ", width));
@@ -191,9 +190,10 @@ std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name)
     // bucket, map, width, height, start x, start y, goal x, goal y, length. The map column is
     // everything between the bucket and the last seven fields, so a path with spaces survives.
     if (t.size() < 9) {
-      reader.fail(cat("expected 9 fields (bucket, map, map width, map height, start x, start y,"
-                      " goal x, goal y, optimal length), found ",
-                      t.size()));
+      reader.fail(
+          cat("expected 9 fields (bucket, map, map width, map height, start x, start y,"
+              " goal x, goal y, optimal length), found ",
+              t.size()));
     }
     const std::size_t n = t.size();
     ScenarioQuery q;
@@ -201,9 +201,8 @@ std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name)
     const std::string_view first = t[1];
     const std::string_view last = t[n - 8];
     q.map.assign(first.data(), static_cast<std::size_t>(last.data() + last.size() - first.data()));
-    static constexpr std::string_view kIntNames[] = {"bucket",  "map width", "map height",
-                                                     "start x", "start y",   "goal x",
-                                                     "goal y"};
+    static constexpr std::string_view kIntNames[] = {
+        "bucket", "map width", "map height", "start x", "start y", "goal x", "goal y"};
     const std::string_view int_fields[] = {t[0],     t[n - 7], t[n - 6], t[n - 5],
                                            t[n - 4], t[n - 3], t[n - 2]};
     long long v[7] = {};
@@ -221,8 +220,8 @@ std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name)
     for (int i = 3; i <= 6; ++i) {
       const long long limit = (i % 2 == 1) ? v[1] : v[2];  // x against width, y against height
       if (v[i] < 0 || v[i] >= limit) {
-        reader.fail(cat(kIntNames[i], " ", v[i], " is outside the declared ", v[1], "x", v[2],
-                        " map"));
+        reader.fail(
+            cat(kIntNames[i], " ", v[i], " is outside the declared ", v[1], "x", v[2], " map"));
       }
     }
     if (!parse_double(t[n - 1], q.optimal_length) || q.optimal_length < 0.0) {

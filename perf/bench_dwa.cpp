@@ -66,8 +66,8 @@ StepCase step_case() {
 void dwa_steps(benchmark::State& state, const StepCase& c, DwaParams p, bool crowded) {
   DwaScratch scratch;
   const std::vector<Cell> unknown = {{10, 9}, {12, 6}};
-  const std::vector<Disc> moving = {{{8.5, 8.5}, 0.4, {}}, {{14.2, 5.1}, 0.4, {}},
-                                    {{4.0, 15.0}, 0.4, {}}};
+  const std::vector<Disc> moving = {
+      {{8.5, 8.5}, 0.4, {}}, {{14.2, 5.1}, 0.4, {}}, {{4.0, 15.0}, 0.4, {}}};
   const DwaView view{c.map.grid, crowded ? std::span<const Cell>(unknown) : std::span<const Cell>(),
                      crowded ? std::span<const Disc>(moving) : std::span<const Disc>()};
   std::int64_t pair_steps = 0, steps = 0;

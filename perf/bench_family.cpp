@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "core/line_of_sight.h"
 #include "algos/postprocess/path_curves.h"
 #include "algos/postprocess/path_simplify.h"
 #include "algos/registry.h"
+#include "core/line_of_sight.h"
 #include "generators/map_generators.h"
 #include "perf/bench_maps.h"
 
@@ -39,7 +39,8 @@ Case uniform_case(int side, double density) {
   Scratch scratch;
   for (int i = 0; i < kMapsPerCase; ++i) {
     Rng rng(2025, static_cast<std::uint64_t>(side) * 1000 +
-                      static_cast<std::uint64_t>(density * 100) * 10 + static_cast<std::uint64_t>(i));
+                      static_cast<std::uint64_t>(density * 100) * 10 +
+                      static_cast<std::uint64_t>(i));
     c.maps.push_back(make_map(spec, rng));
     Rng plan_rng(1, 1);
     const MapInstance& m = c.maps.back();
@@ -66,8 +67,8 @@ void run_planner(benchmark::State& state, const Case& c, const Planner& planner)
       benchmark::Counter(static_cast<double>(expanded), benchmark::Counter::kIsRate);
   state.counters["plans_per_s"] =
       benchmark::Counter(static_cast<double>(plans), benchmark::Counter::kIsRate);
-  state.counters["expanded_per_plan"] =
-      benchmark::Counter(static_cast<double>(expanded) / static_cast<double>(std::max<std::int64_t>(1, plans)));
+  state.counters["expanded_per_plan"] = benchmark::Counter(
+      static_cast<double>(expanded) / static_cast<double>(std::max<std::int64_t>(1, plans)));
 }
 
 // A post-processing step: A*'s path of a map in, a polyline out.
@@ -165,8 +166,9 @@ int main(int argc, char** argv) {
       cases.push_back(std::make_unique<Case>(uniform_case(side, density)));
 
   static std::vector<ConfiguredPlanner> planners;
-  const char* names[] = {"astar", "ma_star", "improved_astar_internal", "improved_astar",
-                         "alt_astar", "kin_astar", "bidir_astar"};
+  const char* names[] = {"astar",          "ma_star",   "improved_astar_internal",
+                         "improved_astar", "alt_astar", "kin_astar",
+                         "bidir_astar"};
   for (const char* name : names) planners.push_back(configure_planner(name, {}, "bench"));
   for (std::size_t k = 0; k < std::size(names); ++k) {
     for (const auto& c : cases) {

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "core/grid.h"
 #include "core/line_of_sight.h"
 #include "core/line_of_sight_batch.h"
-#include "core/grid.h"
 #include "core/rng.h"
 
 namespace agv {
@@ -103,8 +103,9 @@ int main(int argc, char** argv) {
           char name[96];
           std::snprintf(name, sizeof name, "%s/%s/d%.1f/len%g", m.name, r.name, density, length);
           const Mode mode = m.mode;
-          benchmark::RegisterBenchmark(name, [c, mode](benchmark::State& s) { run(s, *c, mode); })
-              ->Unit(benchmark::kMicrosecond);
+          benchmark::RegisterBenchmark(name, [c, mode](benchmark::State& s) {
+            run(s, *c, mode);
+          })->Unit(benchmark::kMicrosecond);
         }
       }
   benchmark::RunSpecifiedBenchmarks();

@@ -25,8 +25,8 @@ void bm_sweep(benchmark::State& state) {
     runs += static_cast<std::int64_t>(r.runs.size());
     benchmark::DoNotOptimize(r.runs.data());
   }
-  state.counters["runs_per_s"] = benchmark::Counter(static_cast<double>(runs),
-                                                    benchmark::Counter::kIsRate);
+  state.counters["runs_per_s"] =
+      benchmark::Counter(static_cast<double>(runs), benchmark::Counter::kIsRate);
 }
 
 }  // namespace

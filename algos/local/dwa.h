@@ -28,12 +28,11 @@
 // "hits" when its clearance is below robot_radius + safety_margin (for a class of obstacle the
 // robot is already closer to than that, just below its current clearance, so it can move away).
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <limits>
 #include <span>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "algos/local/unicycle.h"
 #include "core/grid.h"
@@ -41,7 +40,7 @@
 namespace agv {
 
 enum class DwaScore {
-  classic,        // paper 003 eq. 12: a heading + b vel + g dist (dist: nearest obstacle of any kind)
+  classic,  // paper 003 eq. 12: a heading + b vel + g dist (dist: nearest obstacle of any kind)
   improved_003,   // paper 003 eq. 13: a Heading + b vel + g dist_sta + d dist_dyna
   following_004,  // paper 004 eq. 13: sigma[a PHead + b dist + g vel]
 };
@@ -70,9 +69,9 @@ struct DwaParams {
   int w_samples = 15;
   DwaScore score = DwaScore::classic;
   DwaWeights weights = default_weights(DwaScore::classic);
-  bool smoothing = false;     // sigma over the sample grid (following_004)
-  bool va_omega = true;       // eq. 10's |w| <= sqrt(2 dist a_w) as well as the v bound
-  double robot_radius = 0.3;  // cells
+  bool smoothing = false;       // sigma over the sample grid (following_004)
+  bool va_omega = true;         // eq. 10's |w| <= sqrt(2 dist a_w) as well as the v bound
+  double robot_radius = 0.3;    // cells
   double safety_margin = 0.05;  // cells: covers the chord between rollout points
   // What the clearance terms (dist, dist_sta, dist_dyna) measure:
   //   collision (Fox et al. 1997, default): the arc length, in metres, the rollout travels
@@ -90,7 +89,7 @@ struct DwaParams {
   // Moving obstacles are seen at their current position only; their discs are inflated by this
   // much (cells) for hits and clearance, as they will have moved by the time the robot passes.
   double dynamic_margin = 0.2;
-  double cell_edge = 1.0;              // metres per cell (from the grid)
+  double cell_edge = 1.0;  // metres per cell (from the grid)
 };
 
 // What the local planner sees at one control step.
@@ -121,18 +120,18 @@ struct DwaScratch {
   Eigen::ArrayXd chord, rot_c, rot_s;  // per-step chord length and rotation
   Eigen::ArrayXd step_static, step_other, min_static, min_other;
   Eigen::ArrayXd hit_static, hit_other;  // rollout step of the first hit (K + 1: none)
-  Eigen::ArrayXd goal_index;           // local goals the rollout has passed so far
+  Eigen::ArrayXd goal_index;             // local goals the rollout has passed so far
   Eigen::ArrayXd heading, velocity, dist, dist_dyna, score, smoothed;
   Eigen::Array<bool, Eigen::Dynamic, 1> admissible;
 };
 
 struct DwaDecision {
   bool any_admissible = false;
-  bool any_moving = false;      // some admissible pair has v > 0
-  double v = 0.0, w = 0.0;      // the command (m/s, rad/s); maximum braking when none admissible
-  double stop_distance = 0.0;   // dist(v, w) of the chosen pair in metres (inf: rollout clear)
-  int samples = 0;              // velocity pairs evaluated
-  int rollout_steps = 0;        // K = round(predict_time / dt)
+  bool any_moving = false;     // some admissible pair has v > 0
+  double v = 0.0, w = 0.0;     // the command (m/s, rad/s); maximum braking when none admissible
+  double stop_distance = 0.0;  // dist(v, w) of the chosen pair in metres (inf: rollout clear)
+  int samples = 0;             // velocity pairs evaluated
+  int rollout_steps = 0;       // K = round(predict_time / dt)
 };
 
 // One DWA control step from `pose` (cells) at velocity (v, w). `goals` (cells, at least one) is

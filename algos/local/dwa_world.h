@@ -3,8 +3,8 @@
 // fusion planners"): the grid's static obstacles, unknown static cells (obstacles the global
 // planner did not see) and moving obstacles (discs at constant speed, reflecting off the walls
 // and off static and unknown cells). The world does not react to the robot, and the planner
-// only ever sees it through DwaView (algos/local/dwa.h). Whether the robot collided is decided by the
-// engine from the recorded trajectory (engine/trajectory_judge.h); contact() here only lets the
+// only ever sees it through DwaView (algos/local/dwa.h). Whether the robot collided is decided by
+// the engine from the recorded trajectory (engine/trajectory_judge.h); contact() here only lets the
 // simulation stop at the first touch instead of driving on through an obstacle.
 //
 // Generation is deterministic from the Rng handed in. The fusion planners seed it from the map
@@ -69,7 +69,9 @@ class DwaWorld {
   // Exact distance from p to the nearest static (grid) or unknown obstacle square.
   double static_clearance(Point p) const;
   double unknown_clearance(Point p) const;  // +inf without unknown cells
-  double obstacle_clearance(Point p) const { return std::min(static_clearance(p), unknown_clearance(p)); }
+  double obstacle_clearance(Point p) const {
+    return std::min(static_clearance(p), unknown_clearance(p));
+  }
 
   enum class Contact { none, static_cell, unknown_cell, moving };
   // Whether a robot disc at p overlaps anything now (1e-9 cells of tolerance in its favour).

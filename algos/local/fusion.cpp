@@ -70,9 +70,10 @@ constexpr FusionVariant kAstarDwa{
 constexpr FusionVariant kAltDwa{"fusion_alt_dwa", "alternative A* global path + improved DWA",
                                 "paper 003 sections 2-4 (eq. 13); docs/PLANNERS.md", "alt_astar",
                                 DwaScore::improved_003};
-constexpr FusionVariant kKinDwa{
-    "fusion_kin_dwa", "kinematic-constraint A* global path + following DWA",
-    "paper 004 sections 2-3 (eq. 13 PHead); docs/PLANNERS.md", "kin_astar", DwaScore::following_004};
+constexpr FusionVariant kKinDwa{"fusion_kin_dwa",
+                                "kinematic-constraint A* global path + following DWA",
+                                "paper 004 sections 2-3 (eq. 13 PHead); docs/PLANNERS.md",
+                                "kin_astar", DwaScore::following_004};
 
 // The global planner's parameters, declared only by the fusion variants.
 void declare_global(ParamDecls<PlannerSetup>& d, const char* global_default,

@@ -1,6 +1,6 @@
 #pragma once
-// Global grid planner + DWA fusion (paper 003 section 4, paper 004 section 3.4; docs/PLANNERS.md "DWA
-// local planner and the fusion planners"), and pure DWA.
+// Global grid planner + DWA fusion (paper 003 section 4, paper 004 section 3.4; docs/PLANNERS.md
+// "DWA local planner and the fusion planners"), and pure DWA.
 //
 // A run: (1) a world is generated for the map (algos/local/dwa_world.h): unknown static cells on or
 // near the map's reference path (classic A*, no_corner_cut, the same for every planner) and

@@ -37,7 +37,7 @@
 namespace agv {
 
 struct FusionOptions {
-  DwaParams dwa;  // cell_edge is taken from the grid
+  DwaParams dwa;                    // cell_edge is taken from the grid
   double waypoint_tolerance = 0.3;  // cells
   double pass_radius = 0.6;         // cells
   double goal_tolerance = 0.5;      // cells
@@ -45,9 +45,9 @@ struct FusionOptions {
   bool aim_segment = true;
   double lookahead = 0.75;  // cells
   bool turn_speed_limit = true;
-  double turn_distance = 1.0;  // cells
-  double sensor_range = 8.0;   // cells
-  bool moving_yield = false;   // moving discs reflect off the robot (WorldSpec::moving_yield)
+  double turn_distance = 1.0;   // cells
+  double sensor_range = 8.0;    // cells
+  bool moving_yield = false;    // moving discs reflect off the robot (WorldSpec::moving_yield)
   bool predict_moving = false;  // the DWA extrapolates discs at their observed velocity
   bool replan = true;
   double key_point_tolerance = 0.1;  // cells, for replanned paths

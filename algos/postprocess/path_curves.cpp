@@ -1,11 +1,10 @@
 #include "algos/postprocess/path_curves.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
-
-#include <Eigen/Core>
 
 #include "algos/postprocess/path_simplify.h"
 #include "core/cell_geometry.h"
@@ -39,9 +38,9 @@ bool on_vertex(Point p) {
 
 // Paper 004 appendix A: P(t) = 1/6 [1 t t^2 t^3] M [P0 P1 P2 P3]^T.
 const Eigen::Matrix4d& bspline_basis() {
-  static const Eigen::Matrix4d m = (Eigen::Matrix4d() << 1, 4, 1, 0,   //
-                                    -3, 0, 3, 0,                       //
-                                    3, -6, 3, 0,                       //
+  static const Eigen::Matrix4d m = (Eigen::Matrix4d() << 1, 4, 1, 0,  //
+                                    -3, 0, 3, 0,                      //
+                                    3, -6, 3, 0,                      //
                                     -1, 3, -3, 1)
                                        .finished() /
                                    6.0;

@@ -16,8 +16,8 @@
 #include <span>
 #include <vector>
 
-#include "core/line_of_sight.h"
 #include "core/grid.h"
+#include "core/line_of_sight.h"
 
 namespace agv {
 
@@ -54,8 +54,8 @@ struct BsplineOptions {
 // Paper 004 section 2.4: the B-spline whose control points are dense[kept[0]], dense[kept[1]],
 // ... (kept increasing, dense[kept] a free polyline under `sight`). Where the sampled curve
 // hits, the removed dense point between the hit segment's control points that lies nearest the
-// hit is re-inserted and the curve refitted (docs/PLANNERS.md); with no removed point left there, the
-// control point nearest the hit is tripled (the curve then runs along the control polygon
+// hit is re-inserted and the curve refitted (docs/PLANNERS.md); with no removed point left there,
+// the control point nearest the hit is tripled (the curve then runs along the control polygon
 // through it). After max_refits, the control polygon dense[kept] itself is returned.
 std::vector<Point> bspline_smooth(const Grid& grid, std::span<const Point> dense,
                                   std::vector<int> kept, const SightRule& sight,

@@ -17,7 +17,9 @@ bool doubled(double v, std::int64_t& out) {
   return true;
 }
 
-bool lattice(Point p, std::int64_t& x, std::int64_t& y) { return doubled(p.x, x) && doubled(p.y, y); }
+bool lattice(Point p, std::int64_t& x, std::int64_t& y) {
+  return doubled(p.x, x) && doubled(p.y, y);
+}
 
 std::vector<int> all_indices(std::size_t n) {
   std::vector<int> keep(n);
@@ -59,7 +61,9 @@ std::vector<int> collinear_keep(std::span<const Point> path) {
   return keep;
 }
 
-void remove_collinear(std::vector<Point>& path) { path = select_points(path, collinear_keep(path)); }
+void remove_collinear(std::vector<Point>& path) {
+  path = select_points(path, collinear_keep(path));
+}
 
 std::vector<int> turning_point_keep(const Grid& grid, std::span<const Point> path,
                                     const SightRule& sight) {
@@ -87,8 +91,8 @@ void remove_turning_points(const Grid& grid, std::vector<Point>& path, const Sig
   path = select_points(path, turning_point_keep(grid, path, sight));
 }
 
-std::vector<int> greedy_keep(const Grid& grid, std::span<const Point> path,
-                             const SightRule& sight, bool from_goal) {
+std::vector<int> greedy_keep(const Grid& grid, std::span<const Point> path, const SightRule& sight,
+                             bool from_goal) {
   const int n = static_cast<int>(path.size());
   if (n <= 2) return all_indices(path.size());
   // Walking from the goal is the same walk on the reversed index order.

@@ -14,13 +14,14 @@
 //   both new segments are free; the triangle inequality again makes it never longer.
 //
 // The *_keep() forms return the indices of the kept points (increasing, first 0, last n - 1),
-// so a later step (the B-spline refit, algos/postprocess/path_curves.h) can re-insert removed points.
+// so a later step (the B-spline refit, algos/postprocess/path_curves.h) can re-insert removed
+// points.
 
 #include <span>
 #include <vector>
 
-#include "core/line_of_sight.h"
 #include "core/grid.h"
+#include "core/line_of_sight.h"
 
 namespace agv {
 

@@ -101,7 +101,8 @@ PlannerInfo birrt_planner() {
   info.name = "birrt";
   info.summary = "Bi-RRT (RRT-Connect): start and goal trees alternate extend / connect";
   info.source =
-      "docs/PLANNERS.md Baselines; paper 000 Tables III-XIII (Bi-RRT column); Kuffner & LaValle 2000";
+      "docs/PLANNERS.md Baselines; paper 000 Tables III-XIII (Bi-RRT column); Kuffner & LaValle "
+      "2000";
   info.expanded_nodes_meaning = "nodes of both trees at the end of the plan (both roots included)";
   info.stochastic = true;
   info.proves_no_path = false;  // gives up with limit after its budget

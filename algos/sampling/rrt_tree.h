@@ -1,8 +1,8 @@
 #pragma once
 // The tree of RRT and RRT-Connect (docs/PLANNERS.md "Baselines"): one implementation shared by
-// algos/sampling/rrt.cpp and algos/sampling/birrt.cpp. It stores continuous points with parent links and answers
-// "nearest tree node to q" through a spatial index, and extends itself towards a target by one
-// step with the shared line-of-sight test.
+// algos/sampling/rrt.cpp and algos/sampling/birrt.cpp. It stores continuous points with parent
+// links and answers "nearest tree node to q" through a spatial index, and extends itself towards a
+// target by one step with the shared line-of-sight test.
 //
 // Nearest-neighbour index, option `nn_index` (perf/README.md "Baselines" has the measurements):
 //   buckets  a uniform grid of square buckets with intrusive per-bucket lists; a query scans
@@ -22,8 +22,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/line_of_sight.h"
 #include "core/grid.h"
+#include "core/line_of_sight.h"
 
 namespace agv {
 

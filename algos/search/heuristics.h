@@ -1,7 +1,7 @@
 #pragma once
-// Grid heuristics of docs/PLANNERS.md "Common ground": the distance estimate from a cell to the goal,
-// from the absolute coordinate differences (dx, dy) in cells. Each is also a tiny functor type so
-// the search core is instantiated per heuristic and the per-node call inlines to a few
+// Grid heuristics of docs/PLANNERS.md "Common ground": the distance estimate from a cell to the
+// goal, from the absolute coordinate differences (dx, dy) in cells. Each is also a tiny functor
+// type so the search core is instantiated per heuristic and the per-node call inlines to a few
 // instructions (no switch per node); with_heuristic() turns the runtime choice into that type once
 // per plan call.
 

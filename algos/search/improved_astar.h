@@ -1,5 +1,6 @@
 #pragma once
-// Improved A* of paper 002 (docs/PLANNERS.md "Improved A*"), registered twice: the internal part alone
+// Improved A* of paper 002 (docs/PLANNERS.md "Improved A*"), registered twice: the internal part
+// alone
 // (`improved_astar_internal`, the planner of the paper's Table 4) and with the external part
 // (`improved_astar`, Table 5).
 

@@ -1,7 +1,7 @@
 #pragma once
-// The one best-first grid search of the A* family (docs/ARCHITECTURE.md "Style" item 2, after warthog's
-// unidirectional_search): Dijkstra, A* and the A* variants of docs/PLANNERS.md are small Policy types
-// plugged into grid_search(), never copies of its loop.
+// The one best-first grid search of the A* family (docs/ARCHITECTURE.md "Style" item 2, after
+// warthog's unidirectional_search): Dijkstra, A* and the A* variants of docs/PLANNERS.md are small
+// Policy types plugged into grid_search(), never copies of its loop.
 //
 // The loop: poll the deadline every kDeadlineInterval expansions; pop the best open cell and
 // close it; stop at the goal; otherwise build the cell's free-neighbour byte from the padded
@@ -33,9 +33,9 @@
 //       neighbourhood is obstacle-free, kinematic A*'s five-direction case). Default 0xFF.
 //
 // (e) the corner rule and (f) diagonal_cost come in GridSearchSetup. (g) A Listener (default
-// NullListener, whose empty inline hooks compile away, docs/ARCHITECTURE.md "Style" item 3) sees every cell put on
-// the open list for the first time (generated, the source included), every expansion and every
-// relaxation, for counting or for recording a search picture.
+// NullListener, whose empty inline hooks compile away, docs/ARCHITECTURE.md "Style" item 3) sees
+// every cell put on the open list for the first time (generated, the source included), every
+// expansion and every relaxation, for counting or for recording a search picture.
 //
 // The expansion itself (free-neighbour byte, move table, policy hooks, relaxation) is
 // GridExpander::expand() on a SearchFrontier, so a search with more than one frontier

@@ -15,7 +15,8 @@ PlannerInfo hma_star_planner();
 // The PSO inertia weight of iteration j (1..t_max), option `inertia`.
 enum class Inertia {
   stochastic,  // paper 000 eq. 5.1d: w_max - (w_max - w_min) (j / t_max) e^rho
-  adaptive,    // paper 000 eq. 5.1c as printed: (w_max + w_min) (gbest_j / gbest_j-1) - w_max j / t_max
+  adaptive,    // paper 000 eq. 5.1c as printed: (w_max + w_min) (gbest_j / gbest_j-1) - w_max j /
+               // t_max
   linear,      // eq. 5.1d with rho = 0, the linear decrease it is derived from
 };
 std::optional<Inertia> inertia_from_string(std::string_view name);

@@ -1,8 +1,9 @@
-// The papers' baselines (PRM, RRT, RRT-Connect, ant colony) against truth (docs/ARCHITECTURE.md "Style" item 11):
-// every returned path validates on hundreds of random solvable maps, success rates are printed
-// (sampling planners may fail within their caps: that is data, not a bug), runs are reproducible
-// from the seed, PRM converges towards the any-angle optimum from above, ants never revisit a
-// cell and move legally, and the RRT nearest-neighbour indexes agree with a brute-force scan.
+// The papers' baselines (PRM, RRT, RRT-Connect, ant colony) against truth (docs/ARCHITECTURE.md
+// "Style" item 11): every returned path validates on hundreds of random solvable maps, success
+// rates are printed (sampling planners may fail within their caps: that is data, not a bug), runs
+// are reproducible from the seed, PRM converges towards the any-angle optimum from above, ants
+// never revisit a cell and move legally, and the RRT nearest-neighbour indexes agree with a
+// brute-force scan.
 
 #include <gtest/gtest.h>
 

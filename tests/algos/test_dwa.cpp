@@ -1,7 +1,7 @@
-// The DWA local planner and the fusion planners against truth (docs/ARCHITECTURE.md "Style" item 11): the unicycle
-// integration is the closed-form arc, the dynamic window stays inside V_m n V_d, every chosen
-// velocity can stop before its rollout's first obstacle (V_a, checked against the exact
-// distance transform), fusion reaches the goal without collision on random solvable maps, a
+// The DWA local planner and the fusion planners against truth (docs/ARCHITECTURE.md "Style" item
+// 11): the unicycle integration is the closed-form arc, the dynamic window stays inside V_m n V_d,
+// every chosen velocity can stop before its rollout's first obstacle (V_a, checked against the
+// exact distance transform), fusion reaches the goal without collision on random solvable maps, a
 // head-on moving obstacle is avoided, runs are reproducible, and the engine's judge catches
 // collisions injected into hand-made trajectories.
 //

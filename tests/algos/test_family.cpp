@@ -1,9 +1,10 @@
 // The A* family of issue 3 (MA*, improved A* internal/full, alternative A*, kinematic A*,
 // bidirectional A*) and the shared post-processing, against truth on many random maps
-// (docs/ARCHITECTURE.md "Style" item 11): every path validates under its planner's own corner rule; smoothed paths
-// are collision-free at a sampling of 0.05 cells; shortcuts never lengthen and never collide;
-// each paper's defining property is checked as a paired comparison; bidirectional A* is optimal.
-// Where a paper's claim is not a property that must hold, the test prints the measured figure
+// (docs/ARCHITECTURE.md "Style" item 11): every path validates under its planner's own corner rule;
+// smoothed paths are collision-free at a sampling of 0.05 cells; shortcuts never lengthen and never
+// collide; each paper's defining property is checked as a paired comparison; bidirectional A* is
+// optimal. Where a paper's claim is not a property that must hold, the test prints the measured
+// figure
 // ("[measured]") and asserts only what must hold.
 
 #include <gtest/gtest.h>

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "algos/registry.h"
 #include "algos/swarm/hma_star.h"
 #include "core/line_of_sight.h"
-#include "algos/registry.h"
 #include "engine/metrics.h"
 #include "engine/statistics.h"
 #include "engine/validator.h"
@@ -37,7 +37,8 @@ MapInstance paper_map(double density, int index) {
   spec.require_solvable = true;
   spec.solvable_rule = CornerRule::no_corner_cut;
   spec.max_attempts = 100000;
-  Rng rng(2000, static_cast<std::uint64_t>(density * 1000) * 100000 + static_cast<std::uint64_t>(index));
+  Rng rng(2000,
+          static_cast<std::uint64_t>(density * 1000) * 100000 + static_cast<std::uint64_t>(index));
   return make_map(spec, rng);
 }
 
@@ -138,15 +139,13 @@ TEST(HmaStar, SoundOnPaperMapsAndPairedAgainstAStar) {
       "[measured] %zu maps (20x20, densities 0.20-0.45, corners): HMA*/A* length ratio %.4f "
       "[95%% CI %.4f, %.4f], i.e. a reduction of %.2f%% [%.2f, %.2f]; wins/ties/losses "
       "%zu/%zu/%zu, Wilcoxon p %.3g. Paper 000 Table XII claims a 12.08%% reduction.\n",
-      vs_astar.pairs, vs_astar.geo_mean_ratio, vs_astar.geo_mean_ci95.lo,
-      vs_astar.geo_mean_ci95.hi, pct(vs_astar.geo_mean_ratio), pct(vs_astar.geo_mean_ci95.hi),
-      pct(vs_astar.geo_mean_ci95.lo), vs_astar.wins, vs_astar.ties, vs_astar.losses,
-      vs_astar.wilcoxon.p);
+      vs_astar.pairs, vs_astar.geo_mean_ratio, vs_astar.geo_mean_ci95.lo, vs_astar.geo_mean_ci95.hi,
+      pct(vs_astar.geo_mean_ratio), pct(vs_astar.geo_mean_ci95.hi), pct(vs_astar.geo_mean_ci95.lo),
+      vs_astar.wins, vs_astar.ties, vs_astar.losses, vs_astar.wilcoxon.p);
   std::printf(
       "[measured] HMA*/MA* (its own start) length ratio %.4f [95%% CI %.4f, %.4f]; the swarm "
       "shortened %d of %zu paths\n",
-      vs_ma.geo_mean_ratio, vs_ma.geo_mean_ci95.lo, vs_ma.geo_mean_ci95.hi, improved,
-      l_hma.size());
+      vs_ma.geo_mean_ratio, vs_ma.geo_mean_ci95.lo, vs_ma.geo_mean_ci95.hi, improved, l_hma.size());
   // Never longer than MA* (asserted per map above), so never a loss against it.
   EXPECT_EQ(vs_ma.losses, 0U);
   EXPECT_GT(improved, 0);

@@ -1,6 +1,6 @@
-// The grid search core, A* and Dijkstra against known truth (docs/ARCHITECTURE.md "Style" item 11): the MovingAI
-// optimal lengths, each other on random maps under every corner rule, and the legality of every
-// move of every returned path.
+// The grid search core, A* and Dijkstra against known truth (docs/ARCHITECTURE.md "Style" item 11):
+// the MovingAI optimal lengths, each other on random maps under every corner rule, and the legality
+// of every move of every returned path.
 
 #include <gtest/gtest.h>
 

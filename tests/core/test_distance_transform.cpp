@@ -65,8 +65,8 @@ double brute_segment_square(Point a, Point b, Cell o) {
       lo = m1;
     }
   }
-  return std::min({point_square(lerp(a, b, 0.5 * (lo + hi)), o), point_square(a, o),
-                   point_square(b, o)});
+  return std::min(
+      {point_square(lerp(a, b, 0.5 * (lo + hi)), o), point_square(a, o), point_square(b, o)});
 }
 
 double brute_segment(const std::vector<Cell>& obs, Point a, Point b) {

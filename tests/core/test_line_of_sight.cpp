@@ -11,9 +11,9 @@
 #include <utility>
 #include <vector>
 
-#include "core/line_of_sight.h"
 #include "core/corner_rule.h"
 #include "core/grid.h"
+#include "core/line_of_sight.h"
 
 namespace agv {
 namespace {

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "core/line_of_sight.h"
-#include "core/line_of_sight_batch.h"
 #include "core/corner_rule.h"
 #include "core/grid.h"
+#include "core/line_of_sight.h"
+#include "core/line_of_sight_batch.h"
 
 namespace agv {
 namespace {
@@ -63,13 +63,20 @@ class Generator {
   double coordinate(int size) {
     const double whole = static_cast<double>(below(static_cast<std::uint64_t>(size) + 1));
     switch (below(8)) {
-      case 0: return whole;
-      case 1: return whole + 0.5;
-      case 2: return whole + 0.25 * static_cast<double>(below(4));
-      case 3: return whole + (below(2) ? 1e-10 : -1e-10);
-      case 4: return whole + (below(2) ? 2e-9 : -2e-9);
-      case 5: return -0.3 + unit() * (size + 0.6);
-      default: return unit() * size;
+      case 0:
+        return whole;
+      case 1:
+        return whole + 0.5;
+      case 2:
+        return whole + 0.25 * static_cast<double>(below(4));
+      case 3:
+        return whole + (below(2) ? 1e-10 : -1e-10);
+      case 4:
+        return whole + (below(2) ? 2e-9 : -2e-9);
+      case 5:
+        return -0.3 + unit() * (size + 0.6);
+      default:
+        return unit() * size;
     }
   }
 
@@ -84,7 +91,8 @@ class Generator {
   // segment of a chosen length in a random direction (0 to the whole map).
   Point partner(const Grid& g, Point a) {
     switch (below(4)) {
-      case 0: return point(g);
+      case 0:
+        return point(g);
       case 1: {
         const int k = 1 + static_cast<int>(below(6));
         const double step = below(3) == 0 ? 0.5 : 1.0;
@@ -108,8 +116,8 @@ class Generator {
 struct Size {
   int w, h;
 };
-constexpr Size kSizes[] = {{1, 1},   {2, 3},    {7, 5},    {20, 20},  {31, 9},   {62, 4},
-                           {63, 17}, {64, 64},  {65, 33},  {100, 7},  {127, 40}, {128, 3},
+constexpr Size kSizes[] = {{1, 1},     {2, 3},    {7, 5},     {20, 20}, {31, 9},   {62, 4},
+                           {63, 17},   {64, 64},  {65, 33},   {100, 7}, {127, 40}, {128, 3},
                            {129, 129}, {191, 12}, {200, 200}, {300, 50}};
 constexpr double kDensities[] = {0.0, 0.05, 0.2, 0.35, 0.5, 0.8};
 
@@ -190,7 +198,8 @@ TEST(LosSimd, NearlyFlatAndVertexRuns) {
       const Point a{gen.unit() * 10.0, y + off[gen.below(std::size(off))]};
       const Point b{140.0 + gen.unit() * 10.0, y + off[gen.below(std::size(off))]};
       const Point c{static_cast<double>(gen.below(40)), static_cast<double>(gen.below(12))};
-      const Point d{c.x + 110.0, c.y + (gen.below(2) ? 1.0 : -1.0) * static_cast<double>(gen.below(3))};
+      const Point d{c.x + 110.0,
+                    c.y + (gen.below(2) ? 1.0 : -1.0) * static_cast<double>(gen.below(3))};
       for (const SightRule& rule : rules) {
         ASSERT_EQ(segment_free(g, a, b, rule), segment_free_reference(g, a, b, rule))
             << a.x << "," << a.y << " " << b.x << "," << b.y << " " << describe(rule);

@@ -54,10 +54,13 @@ TEST(ParamDecls, DefaultsFillEveryField) {
 }
 
 TEST(ParamDecls, GivenValuesReachTheirFields) {
-  const Options o = decls().resolve(
-      {{"weight", 2}, {"budget", 7.0}, {"verbose", true}, {"mode", "fast"}, {"points", 3},
-       {"step", 0.5}},
-      "p");
+  const Options o = decls().resolve({{"weight", 2},
+                                     {"budget", 7.0},
+                                     {"verbose", true},
+                                     {"mode", "fast"},
+                                     {"points", 3},
+                                     {"step", 0.5}},
+                                    "p");
   EXPECT_DOUBLE_EQ(o.weight, 2.0);
   EXPECT_EQ(o.budget, 7);
   EXPECT_TRUE(o.verbose);

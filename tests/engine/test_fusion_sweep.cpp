@@ -16,21 +16,24 @@ namespace {
 using nlohmann::json;
 
 SweepConfig small_fusion_config() {
-  return parse_config(json{
-      {"name", "fusion-test"},
-      {"seed", 5},
-      {"generators", {"uniform"}},
-      {"sizes", {16}},
-      {"densities", {0.1, 0.25}},
-      {"maps_per_cell", 6},
-      {"map", {{"endpoints", "corners"}, {"require_solvable", true}}},
-      {"planners",
-       {{{"name", "fusion_astar_dwa"}, {"label", "fusion_dyn0"}, {"params", {{"dynamic_obstacles", 0}}}},
-        {{"name", "fusion_astar_dwa"}, {"label", "fusion_dyn2"}, {"params", {{"dynamic_obstacles", 2}}}},
-        {{"name", "fusion_kin_dwa"}},
-        {{"name", "dwa"}}}},
-      {"baseline", "fusion_dyn0"},
-      {"time_limit_s", 60}});
+  return parse_config(json{{"name", "fusion-test"},
+                           {"seed", 5},
+                           {"generators", {"uniform"}},
+                           {"sizes", {16}},
+                           {"densities", {0.1, 0.25}},
+                           {"maps_per_cell", 6},
+                           {"map", {{"endpoints", "corners"}, {"require_solvable", true}}},
+                           {"planners",
+                            {{{"name", "fusion_astar_dwa"},
+                              {"label", "fusion_dyn0"},
+                              {"params", {{"dynamic_obstacles", 0}}}},
+                             {{"name", "fusion_astar_dwa"},
+                              {"label", "fusion_dyn2"},
+                              {"params", {{"dynamic_obstacles", 2}}}},
+                             {{"name", "fusion_kin_dwa"}},
+                             {{"name", "dwa"}}}},
+                           {"baseline", "fusion_dyn0"},
+                           {"time_limit_s", 60}});
 }
 
 std::string report_text(const SweepConfig& config, int threads) {

@@ -60,16 +60,24 @@ PlannerInfo faulty(const std::string& name, Fault f) {
   info.summary = "deliberately faulty test planner";
   switch (f) {
     case Fault::hang:
-      info.make = [](const Params&) -> std::unique_ptr<Planner> { return std::make_unique<FaultyPlanner>(Fault::hang); };
+      info.make = [](const Params&) -> std::unique_ptr<Planner> {
+        return std::make_unique<FaultyPlanner>(Fault::hang);
+      };
       break;
     case Fault::segfault:
-      info.make = [](const Params&) -> std::unique_ptr<Planner> { return std::make_unique<FaultyPlanner>(Fault::segfault); };
+      info.make = [](const Params&) -> std::unique_ptr<Planner> {
+        return std::make_unique<FaultyPlanner>(Fault::segfault);
+      };
       break;
     case Fault::throws:
-      info.make = [](const Params&) -> std::unique_ptr<Planner> { return std::make_unique<FaultyPlanner>(Fault::throws); };
+      info.make = [](const Params&) -> std::unique_ptr<Planner> {
+        return std::make_unique<FaultyPlanner>(Fault::throws);
+      };
       break;
     case Fault::hog:
-      info.make = [](const Params&) -> std::unique_ptr<Planner> { return std::make_unique<FaultyPlanner>(Fault::hog); };
+      info.make = [](const Params&) -> std::unique_ptr<Planner> {
+        return std::make_unique<FaultyPlanner>(Fault::hog);
+      };
       break;
   }
   return info;
@@ -163,7 +171,9 @@ TEST(Isolation, IsolatedReportEqualsInProcessReport) {
        {"densities", {0.1, 0.3}},
        {"maps_per_cell", 6},
        {"planners",
-        {"astar", "dijkstra", {{"name", "ma_star"}, {"only", {{"densities", {0.3}}, {"maps_per_cell", 4}}}}}}});
+        {"astar",
+         "dijkstra",
+         {{"name", "ma_star"}, {"only", {{"densities", {0.3}}, {"maps_per_cell", 4}}}}}}});
   const auto a = deterministic_part(build_report(config, run_sweep(config, isolated(10.0))));
   SweepOptions o;
   o.threads = 2;
@@ -185,11 +195,13 @@ TEST(Isolation, WorkerThatCannotStartFailsTheSweep) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(message({"/bin/false"}).find("isolation worker failed to start: worker exited with code 1"),
-            std::string::npos);
+  EXPECT_NE(
+      message({"/bin/false"}).find("isolation worker failed to start: worker exited with code 1"),
+      std::string::npos);
   const std::string refused =
       message({"/bin/sh", "-c", "read config; echo '{\"fatal\": \"planners[1]: refused\"}'"});
-  EXPECT_NE(refused.find("isolation worker failed to start: planners[1]: refused"), std::string::npos)
+  EXPECT_NE(refused.find("isolation worker failed to start: planners[1]: refused"),
+            std::string::npos)
       << refused;
 }
 

@@ -68,8 +68,10 @@ TEST(Sweep, ReportIsIdenticalOnOneAndTwoThreads) {
     EXPECT_EQ(cell["paired"].size(), cell["planners"].size() - 1);
     for (const auto& p : cell["planners"]) {
       bool is_scoped = false;
-      for (const auto& e : config.planners) is_scoped = is_scoped || (e.label == p["planner"] && !e.only.everywhere());
-      EXPECT_EQ(p["runs"], is_scoped ? kReducedScopedMaps : kReducedMaps) << cell["cell"] << p["planner"];
+      for (const auto& e : config.planners)
+        is_scoped = is_scoped || (e.label == p["planner"] && !e.only.everywhere());
+      EXPECT_EQ(p["runs"], is_scoped ? kReducedScopedMaps : kReducedMaps)
+          << cell["cell"] << p["planner"];
     }
   }
   EXPECT_EQ(report["coverage"]["runs_expected"], scheduled_runs(config, plan_sweep(config)));
@@ -181,7 +183,8 @@ TEST(Config, ScopeErrorsNameTheField) {
   json j = base;
   j["planners"][1]["only"] = {{"sizes", {20}}};
   EXPECT_NE(message(j).find("planners[1].only.sizes[0]: not one of the sweep's sizes"),
-            std::string::npos) << message(j);
+            std::string::npos)
+      << message(j);
   j["planners"][1]["only"] = {{"densities", {0.1, 0.3}}};
   EXPECT_NE(message(j).find("planners[1].only.densities[1]"), std::string::npos);
   j["planners"][1]["only"] = {{"generators", {"maze"}}};
@@ -196,15 +199,16 @@ TEST(Config, ScopeErrorsNameTheField) {
 }
 
 TEST(Sweep, ScopedPlannerRunsOnlyOnItsCellsAndMapsAndIsPairedThere) {
-  const json j = {{"seed", 3},
-                  {"generators", {"uniform", "rooms"}},
-                  {"sizes", {16, 24}},
-                  {"densities", {0.1, 0.2}},
-                  {"maps_per_cell", 5},
-                  {"planners",
-                   {"astar",
-                    {{"name", "dijkstra"},
-                     {"only", {{"generators", {"rooms"}}, {"densities", {0.2}}, {"maps_per_cell", 3}}}}}}};
+  const json j = {
+      {"seed", 3},
+      {"generators", {"uniform", "rooms"}},
+      {"sizes", {16, 24}},
+      {"densities", {0.1, 0.2}},
+      {"maps_per_cell", 5},
+      {"planners",
+       {"astar",
+        {{"name", "dijkstra"},
+         {"only", {{"generators", {"rooms"}}, {"densities", {0.2}}, {"maps_per_cell", 3}}}}}}};
   const SweepConfig config = parse_config(j);
   const SweepPlan plan = plan_sweep(config);
   EXPECT_EQ(scheduled_runs(config, plan), 8 * 5 + 2 * 3);

@@ -3,8 +3,8 @@
 // back with write_map and read again, must give the same cells, and writing is a fixed point.
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 

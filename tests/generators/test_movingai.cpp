@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "generators/movingai.h"
 #include "core/rng.h"
+#include "generators/movingai.h"
 
 namespace agv {
 namespace {
@@ -25,10 +25,8 @@ struct SharedMap {
   std::size_t scenarios;
 };
 constexpr SharedMap kSharedMaps[] = {
-    {"arena2.map", 281, 209, 910},
-    {"random512-10-0.map", 512, 512, 1780},
-    {"maze512-1-0.map", 512, 512, 12120},
-    {"8room_000.map", 512, 512, 2140},
+    {"arena2.map", 281, 209, 910},        {"random512-10-0.map", 512, 512, 1780},
+    {"maze512-1-0.map", 512, 512, 12120}, {"8room_000.map", 512, 512, 2140},
     {"Berlin_0_512.map", 512, 512, 1870},
 };
 
@@ -118,7 +116,8 @@ TEST(MovingAi, WriteThenReadIsIdentical) {
 }
 
 TEST(MovingAi, AcceptsAllCharactersAndTrailingBlankLines) {
-  const Grid g = parse_map_text("type octile\r\nheight 2\r\nwidth 4\r\nmap\r\n.G@O\r\nTSW.\r\n\r\n \n");
+  const Grid g =
+      parse_map_text("type octile\r\nheight 2\r\nwidth 4\r\nmap\r\n.G@O\r\nTSW.\r\n\r\n \n");
   EXPECT_EQ(g.width(), 4);
   EXPECT_EQ(g.height(), 2);
   EXPECT_FALSE(g.blocked(0, 0));
@@ -240,10 +239,10 @@ TEST(MovingAi, ScenarioMustFitTheMap) {
   g.set_blocked(3, 4, true);
   const auto q = parse_scen_text(
       "version 1\n"
-      "0\ta.map\t10\t8\t1\t2\t5\t5\t5\n"    // fine
-      "0\ta.map\t10\t8\t3\t4\t5\t5\t5\n"    // start on an obstacle
-      "0\ta.map\t10\t8\t1\t2\t3\t4\t5\n"    // goal on an obstacle
-      "0\ta.map\t10\t10\t1\t2\t5\t5\t5\n"   // declared size differs
+      "0\ta.map\t10\t8\t1\t2\t5\t5\t5\n"     // fine
+      "0\ta.map\t10\t8\t3\t4\t5\t5\t5\n"     // start on an obstacle
+      "0\ta.map\t10\t8\t1\t2\t3\t4\t5\n"     // goal on an obstacle
+      "0\ta.map\t10\t10\t1\t2\t5\t5\t5\n"    // declared size differs
       "0\ta.map\t12\t8\t11\t2\t5\t5\t5\n");  // declared size differs (and start outside)
   ASSERT_EQ(q.size(), 5U);
   EXPECT_NO_THROW(check_scenario_fits(g, q[0], "s.scen"));

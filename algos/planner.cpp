@@ -23,7 +23,7 @@ const char* to_string(Failure f) {
 }
 
 struct Deadline::PollCounter {
-  explicit PollCounter(std::int64_t allowed) : allowed(allowed) {}
+  explicit PollCounter(std::int64_t limit) : allowed(limit) {}
   const std::int64_t allowed;
   // Atomic: copies may be polled from the threads of one planner's parallel phases.
   std::atomic<std::int64_t> polls{0};

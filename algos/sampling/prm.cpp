@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "algos/sampling/point_cloud.h"
 #include "algos/sampling/sampling_params.h"
 #include "core/cell_geometry.h"
 
@@ -24,19 +25,8 @@ constexpr long long kMaxDrawsPerSample = 64;
 constexpr int kStartNode = 0;
 constexpr int kGoalNode = 1;
 
-struct Cloud {
-  const std::vector<Point>* points;
-  std::size_t kdtree_get_point_count() const { return points->size(); }
-  double kdtree_get_pt(std::size_t i, std::size_t dim) const {
-    return dim == 0 ? (*points)[i].x : (*points)[i].y;
-  }
-  template <class Box>
-  bool kdtree_get_bbox(Box& /*box*/) const {
-    return false;
-  }
-};
-using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>,
-                                                   Cloud, 2, std::uint32_t>;
+using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>,
+                                                   PointCloud, 2, std::uint32_t>;
 
 // Per-thread buffers, reused from plan to plan.
 struct PrmScratch {
@@ -141,7 +131,7 @@ class PrmPlanner final : public Planner {
     }
 
     const std::size_t n = s.points.size();
-    const Cloud cloud{&s.points};
+    const PointCloud cloud{&s.points};
     const KdTree tree(2, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
     const std::size_t want = std::min(k_ + 1, n);  // + 1: the query point finds itself
     s.knn_index.resize(want);

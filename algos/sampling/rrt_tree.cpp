@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "algos/sampling/point_cloud.h"
+
 // nanoflann 1.4's dynamic adaptor copies empty sub-trees whose bounding box is not yet set
 // (harmless: it is computed before use); GCC flags the copy at -O2.
 #pragma GCC diagnostic push
@@ -30,22 +32,11 @@ std::optional<NearestIndex> nearest_index_from_string(std::string_view name) {
   return std::nullopt;
 }
 
-// nanoflann's dataset adaptor over the tree's own point array (no copy).
+// The nearest-neighbour index over the tree's own point array (algos/sampling/point_cloud.h).
 struct RrtTree::KdIndex {
-  struct Cloud {
-    const std::vector<Point>* points;
-    std::size_t kdtree_get_point_count() const { return points->size(); }
-    double kdtree_get_pt(std::size_t i, std::size_t dim) const {
-      return dim == 0 ? (*points)[i].x : (*points)[i].y;
-    }
-    template <class Box>
-    bool kdtree_get_bbox(Box& /*box*/) const {
-      return false;
-    }
-  };
   using Tree =
-      nanoflann::KDTreeSingleIndexDynamicAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud,
-                                                 2, std::uint32_t>;
+      nanoflann::KDTreeSingleIndexDynamicAdaptor<nanoflann::L2_Simple_Adaptor<double, PointCloud>,
+                                                 PointCloud, 2, std::uint32_t>;
 
   // The adaptor keeps log2(maximum point count) + 1 static trees and indexes past the last one
   // when more points arrive, so the maximum is its default (1e9), far above any tree here; empty
@@ -53,7 +44,7 @@ struct RrtTree::KdIndex {
   explicit KdIndex(const std::vector<Point>& points)
       : cloud{&points}, tree(2, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {}
 
-  Cloud cloud;
+  PointCloud cloud;
   Tree tree;
 };
 

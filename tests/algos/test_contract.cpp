@@ -269,6 +269,9 @@ TEST_P(PlannerContract, EndpointOutsideTheGridOrBlockedIsRefused) {
     const PlanResult r = planned(*q.map, 0, q.start, q.goal, scratch_);
     EXPECT_EQ(to_string(r.failure), std::string("invalid_input"));
     EXPECT_FALSE(r.message.empty());
+    // The refusal names the endpoint: the start when it is the one off the free grid.
+    const bool start_bad = !q.map->grid.in_bounds(q.start) || q.map->grid.blocked(q.start);
+    EXPECT_EQ(r.message.rfind(start_bad ? "start (" : "goal (", 0), 0U) << r.message;
     const RunOutput out = judged(*q.map, 0, q.start, q.goal, Deadline::never(), scratch_);
     EXPECT_EQ(out.outcome, Outcome::invalid_input);
   }

@@ -1,5 +1,6 @@
 #include "algos/registry.h"
 
+#include <algorithm>
 #include <deque>
 
 #include "algos/local/fusion.h"
@@ -53,6 +54,27 @@ std::vector<PlannerInfo> standalone_planners() {
   };
 }
 
+// The declared defaults of the collision-model parameters become what a run gets when neither
+// the user nor a sweep's "collision" sets them: the default model's rule, and the larger of the
+// declared clearance and the default model's (configure_planner applies a sweep's own model).
+void follow_default_model(std::vector<PlannerInfo>& registry) {
+  const CollisionModel model;
+  for (auto& info : registry)
+    for (auto& spec : info.params) {
+      const std::optional<ModelRole> role = model_role(spec.name);
+      if (!role) continue;
+      if (*role == ModelRole::corner_rule) {
+        spec.default_value = std::string(to_string(model.corner_rule));
+        spec.doc += "; unset: the sweep's collision model's rule";
+      } else {
+        spec.default_value =
+            std::max(spec.default_value.get<double>(),
+                     *role == ModelRole::margin ? model.clearance : model.clearance + 0.5);
+        spec.doc += "; unset: at least the sweep's collision-model clearance";
+      }
+    }
+}
+
 // The local planners, last: a fusion planner's `global_planner` chooses among the grid planners
 // registered before it (planner_registry() cannot be asked while it is being built).
 std::vector<PlannerInfo> build_registry() {
@@ -62,6 +84,7 @@ std::vector<PlannerInfo> build_registry() {
   registry.push_back(fusion_astar_dwa_planner(grid));
   registry.push_back(fusion_alt_dwa_planner(grid));
   registry.push_back(fusion_kin_dwa_planner(grid));
+  follow_default_model(registry);
   return registry;
 }
 
@@ -98,8 +121,70 @@ const PlannerInfo* find_planner(std::string_view name) {
   return nullptr;
 }
 
+std::optional<ModelRole> model_role(std::string_view param) {
+  if (param == "corner_rule" || param == "global_corner_rule") return ModelRole::corner_rule;
+  if (param == "shortcut_margin" || param == "global_margin" || param == "clearance" ||
+      param == "curve_clearance")
+    return ModelRole::margin;
+  if (param == "r_obs") return ModelRole::radius;
+  return std::nullopt;
+}
+
+namespace {
+
+// What the model asks of one parameter: its rule, or the clearance in the parameter's unit
+// (margin cells, or an obstacle radius of clearance + 0.5).
+nlohmann::json model_value(ModelRole role, const CollisionModel& model) {
+  switch (role) {
+    case ModelRole::corner_rule:
+      return std::string(to_string(model.corner_rule));
+    case ModelRole::margin:
+      return model.clearance;
+    case ModelRole::radius:
+      return model.clearance + 0.5;
+  }
+  return nullptr;
+}
+
+// The user's parameters with every unset model parameter filled in from the model, and the set
+// ones that are looser than it.
+nlohmann::json with_model_defaults(const PlannerInfo& info, const nlohmann::json& given,
+                                   const CollisionModel& model,
+                                   std::vector<ModelDeviation>& looser_than_model) {
+  if (!given.is_object()) return given;  // Params::resolve names the type error
+  nlohmann::json out = given;
+  for (const auto& spec : info.params) {
+    const std::optional<ModelRole> role = model_role(spec.name);
+    if (!role) continue;
+    const nlohmann::json wanted = model_value(*role, model);
+    const auto it = given.find(spec.name);
+    if (*role == ModelRole::corner_rule) {
+      if (it == given.end()) {
+        out[spec.name] = wanted;
+        continue;
+      }
+      const auto rule =
+          it->is_string() ? corner_rule_from_string(it->get<std::string>()) : std::nullopt;
+      // A value that is no rule (`planner_default`, a typo) is left to Params::resolve.
+      if (rule && looser(*rule, model.corner_rule))
+        looser_than_model.push_back({spec.name, *it, wanted});
+      continue;
+    }
+    const double floor = wanted.get<double>();
+    if (it == given.end()) {
+      const double declared = spec.default_value.get<double>();
+      out[spec.name] = std::max(declared, floor);
+    } else if (it->is_number() && it->get<double>() < floor && it->get<double>() >= 0.0) {
+      looser_than_model.push_back({spec.name, *it, wanted});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 ConfiguredPlanner configure_planner(const std::string& name, const nlohmann::json& params,
-                                    const std::string& where) {
+                                    const std::string& where, const CollisionModel& model) {
   const PlannerInfo* info = find_planner(name);
   if (info == nullptr) {
     std::string known;
@@ -108,7 +193,8 @@ ConfiguredPlanner configure_planner(const std::string& name, const nlohmann::jso
   }
   ConfiguredPlanner c;
   c.info = info;
-  c.params = Params::resolve(info->params, params, where + ".params");
+  const nlohmann::json given = with_model_defaults(*info, params, model, c.looser_than_model);
+  c.params = Params::resolve(info->params, given, where + ".params");
   c.planner = info->make(c.params);
   return c;
 }

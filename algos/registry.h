@@ -4,12 +4,14 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "algos/planner.h"
+#include "core/collision_model.h"
 #include "core/params.h"
 
 namespace agv {
@@ -47,14 +49,33 @@ void add_planner_for_testing(PlannerInfo info);
 // nullptr when unknown.
 const PlannerInfo* find_planner(std::string_view name);
 
-// Looks the planner up and validates its parameters; throws InputError naming `where`.
+// The parameters that follow the collision model (docs/METRICS.md "Collision model"): a corner
+// rule (`corner_rule`, a fusion planner's `global_corner_rule`) takes the model's rule, and a
+// clearance (`shortcut_margin`, `global_margin`, the smoothing's `curve_clearance` and the
+// sampling planners' `clearance`, in margin cells; MA*'s and HMA*'s obstacle radius `r_obs` =
+// clearance + 0.5) takes the larger of its declared default and the model's clearance, whenever the
+// user leaves them unset.
+enum class ModelRole { corner_rule, margin, radius };
+std::optional<ModelRole> model_role(std::string_view param);
+
+// A parameter the user set looser than the model: the planner is then a labelled variant whose
+// paths are still judged under the model (a path that breaks it is invalid_path).
+struct ModelDeviation {
+  std::string param;
+  nlohmann::json value;  // as set
+  nlohmann::json model;  // what the model asks for
+};
+
+// Looks the planner up and validates its parameters, the collision-model ones defaulting to
+// `model`; throws InputError naming `where`.
 struct ConfiguredPlanner {
   const PlannerInfo* info = nullptr;
   Params params;
   std::unique_ptr<Planner> planner;
+  std::vector<ModelDeviation> looser_than_model;
 };
 ConfiguredPlanner configure_planner(const std::string& name, const nlohmann::json& params,
-                                    const std::string& where);
+                                    const std::string& where, const CollisionModel& model = {});
 
 // The registry as JSON (`agvbench list --json`).
 nlohmann::json registry_json();

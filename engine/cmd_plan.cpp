@@ -2,6 +2,7 @@
 // A generated map is the very map a sweep cell would produce for (seed, map index), so any run
 // record can be replayed and looked at.
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -106,6 +107,26 @@ void add_trajectory(nlohmann::json& run, const Trajectory& tr) {
   run["key_points"] = points_json(tr.key_points);
 }
 
+CollisionModel plan_model(const PlanCommand& cmd) {
+  CollisionModel model;
+  const auto rule = corner_rule_from_string(cmd.corner_rule);
+  if (!rule)
+    throw InputError("--corner-rule: \"" + cmd.corner_rule +
+                     "\" is not a corner rule (allow, no_squeeze, no_corner_cut)");
+  model.corner_rule = *rule;
+  const double max = max_model_clearance(model.corner_rule);
+  if (!(cmd.clearance >= 0.0 && cmd.clearance <= max)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "--clearance: %g is outside [0, %.6g], the range a model with "
+                  "corner rule %s supports",
+                  cmd.clearance, max, cmd.corner_rule.c_str());
+    throw InputError(buf);
+  }
+  model.clearance = cmd.clearance;
+  return model;
+}
+
 }  // namespace
 
 int command_plan(const PlanCommand& cmd) {
@@ -178,13 +199,14 @@ int command_plan(const PlanCommand& cmd) {
   map_doc["goal"] = {goal.x, goal.y};
   map_doc["rows"] = grid_rows(grid);
 
-  MapReference ref(grid, start, goal);
+  const CollisionModel model = plan_model(cmd);
+  MapReference ref(grid, start, goal, model);
   Scratch scratch;
   std::vector<RunOutput> outputs;
   nlohmann::json runs = nlohmann::json::array();
   for (std::size_t i = 0; i < infos.size(); ++i) {
     ConfiguredPlanner c = configure_planner(infos[i]->name, cli_params_for(*infos[i], cmd.params),
-                                            "--planner " + infos[i]->name);
+                                            "--planner " + infos[i]->name, model);
     SweepCell replay;
     replay.key = map_doc.value("cell", cmd.map_file);
     Rng rng = run_rng(static_cast<std::uint64_t>(cmd.seed), replay, cmd.map_index, infos[i]->name);
@@ -210,7 +232,11 @@ int command_plan(const PlanCommand& cmd) {
                     {"timing", {{"plan_time_ns", o.plan_time_ns}, {"phases", phases}}}});
     if (o.result.trajectory) add_trajectory(runs.back(), *o.result.trajectory);
   }
-  const nlohmann::json doc = {{"map", map_doc}, {"runs", runs}};
+  const nlohmann::json doc = {{"map", map_doc},
+                              {"collision",
+                               {{"corner_rule", std::string(to_string(model.corner_rule))},
+                                {"clearance", model.clearance}}},
+                              {"runs", runs}};
   if (!cmd.json_out.empty()) write_json_atomic(doc, cmd.json_out);
   if (cmd.json) {
     std::cout << doc.dump(1) << "\n";

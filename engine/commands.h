@@ -53,6 +53,10 @@ struct PlanCommand {
   bool json = false;
   bool ascii = true;
   std::string json_out;  // write the result document to this file
+  // The collision model every path is judged under, and every planner's default rule and
+  // clearance (as a sweep's "collision").
+  std::string corner_rule = "no_corner_cut";
+  double clearance = 0.0;
 };
 int command_plan(const PlanCommand& cmd);
 

@@ -69,6 +69,11 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("--map-index", plan.map_index, "map index within its sweep cell");
   plan_cmd->add_option("--start", plan.start, "start cell x,y (overrides the endpoints)");
   plan_cmd->add_option("--goal", plan.goal, "goal cell x,y (overrides the endpoints)");
+  plan_cmd->add_option("--corner-rule", plan.corner_rule,
+                       "collision model: allow, no_squeeze or no_corner_cut (default)");
+  plan_cmd->add_option(
+      "--clearance", plan.clearance,
+      "collision model: cells from obstacle centres beyond half a cell (default 0)");
   plan_cmd->add_flag("--json", plan.json, "print the result as JSON instead of text");
   plan_cmd->add_option("--json-out", plan.json_out, "also write the result JSON to this file");
   plan_cmd->add_flag("!--no-ascii", plan.ascii, "do not draw the map");

@@ -15,7 +15,8 @@ std::vector<ConfiguredPlanner> configure_planners(const SweepConfig& config) {
   std::vector<ConfiguredPlanner> planners;
   for (std::size_t i = 0; i < config.planners.size(); ++i) {
     const auto& p = config.planners[i];
-    planners.push_back(configure_planner(p.name, p.params, "planners[" + std::to_string(i) + "]"));
+    planners.push_back(configure_planner(p.name, p.params, "planners[" + std::to_string(i) + "]",
+                                         config.collision));
   }
   return planners;
 }
@@ -69,7 +70,7 @@ MapSlot run_map_task(const MapTaskContext& context, std::int64_t task,
   const MapInstance inst = make_task_map(context, task);
   const MapSlot slot = map_slot_of(inst);
   // Shared by the task's runs: the optimal lengths are computed once per corner rule.
-  MapReference ref(inst.grid, inst.start, inst.goal);
+  MapReference ref(inst.grid, inst.start, inst.goal, context.config.collision);
   for (const std::size_t p : planners) {
     const PlannerEntry& entry = context.config.planners.at(p);
     Rng rng = run_rng(context.config.seed, cell, map_index, entry.label);

@@ -111,7 +111,10 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
   }
 
   if (!judged) {
-    const ValidationResult v = validate_path(map.grid(), map.start(), map.goal(), r.path, r.rule);
+    // Under the sweep's model, whatever rule the planner searched with (docs/METRICS.md
+    // "Collision model"): a looser variant's path that breaks it is invalid, never scored.
+    const ValidationResult v =
+        validate_path(map.grid(), map.start(), map.goal(), r.path, map.model().sight());
     if (!v.ok) {
       out.outcome = Outcome::invalid_path;
       out.message = v.reason;
@@ -127,9 +130,9 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
     if (values[i].first != kRunMetricNames[i]) throw std::logic_error("metric order mismatch");
     out.metrics[i] = values[i].second;
   }
-  // The reference is the optimum under no_corner_cut (docs/METRICS.md); a planner allowed to cut
-  // corners can score below 1.
-  if (auto opt = map.optimal_length(CornerRule::no_corner_cut, scratch); opt && *opt > 0.0) {
+  // The reference is the 8-connected optimum under the model's rule, which also keeps the model's
+  // clearance (core/collision_model.h): exactly 1 for an optimal grid search under the model.
+  if (auto opt = map.optimal_length(map.model().corner_rule, scratch); opt && *opt > 0.0) {
     out.metrics[kOptimalityMetric] = m.path_length / *opt;
   } else if (opt && *opt == 0.0) {
     out.metrics[kOptimalityMetric] = 1.0;

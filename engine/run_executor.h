@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "algos/planner.h"
+#include "core/collision_model.h"
 #include "engine/metrics.h"
 
 namespace agv {
@@ -50,8 +51,11 @@ using RunMetrics = std::array<double, kRunMetricNames.size()>;
 // What the engine knows about a map, shared by every planner run on it.
 class MapReference {
  public:
-  MapReference(const Grid& grid, Cell start, Cell goal) : grid_(grid), start_(start), goal_(goal) {}
+  MapReference(const Grid& grid, Cell start, Cell goal, const CollisionModel& model = {})
+      : grid_(grid), start_(start), goal_(goal), model_(model) {}
   const Grid& grid() const { return grid_; }
+  // What every path on this map is judged under.
+  const CollisionModel& model() const { return model_; }
   Cell start() const { return start_; }
   Cell goal() const { return goal_; }
   // Optimal 8-connected length under `rule` (Dijkstra), computed once per rule; nullopt when
@@ -62,6 +66,7 @@ class MapReference {
   const Grid& grid_;
   Cell start_;
   Cell goal_;
+  CollisionModel model_;
   std::array<bool, 3> known_{};
   std::array<std::optional<double>, 3> optimal_{};
 };

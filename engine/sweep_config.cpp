@@ -135,6 +135,30 @@ void refuse_moved_shape_params(const json& j) {
   }
 }
 
+// "collision": {"corner_rule": ..., "clearance": ...}; absent = the default model.
+CollisionModel parse_collision(const json& j) {
+  ObjectReader r(j, "collision.");
+  CollisionModel model;
+  model.corner_rule =
+      *corner_rule_from_string(r.choice("corner_rule", std::string(to_string(model.corner_rule)),
+                                        {"allow", "no_squeeze", "no_corner_cut"}));
+  const double max = max_model_clearance(model.corner_rule);
+  if (r.has("clearance") && r.raw("clearance").is_number() &&
+      r.raw("clearance").get<double>() > max && r.raw("clearance").get<double>() <= 10.0) {
+    char value[64];
+    std::snprintf(value, sizeof value, "%g is more than %.6g", r.raw("clearance").get<double>(),
+                  max);
+    throw InputError(std::string("collision.clearance: ") + value +
+                     ", the most a model with corner_rule " +
+                     std::string(to_string(model.corner_rule)) +
+                     " supports (every grid move between free cell centres must keep it; an "
+                     "inflated map for larger clearances is not built)");
+  }
+  model.clearance = r.number("clearance", 0.0, 0.0, max);
+  r.finish();
+  return model;
+}
+
 void parse_map_options(const json& j, MapSpec& map) {
   ObjectReader r(j, "map.");
   if (j.is_object()) refuse_moved_shape_params(j);
@@ -142,8 +166,9 @@ void parse_map_options(const json& j, MapSpec& map) {
   map.endpoints = endpoints == "corners" ? EndpointMode::corners : EndpointMode::random;
   map.min_distance = r.number("min_distance", 0.0, 0.0, 1e6);
   map.require_solvable = r.boolean("require_solvable", true);
-  map.solvable_rule = *corner_rule_from_string(
-      r.choice("solvable_rule", "no_corner_cut", {"allow", "no_squeeze", "no_corner_cut"}));
+  map.solvable_rule =
+      *corner_rule_from_string(r.choice("solvable_rule", std::string(to_string(map.solvable_rule)),
+                                        {"allow", "no_squeeze", "no_corner_cut"}));
   map.max_attempts = static_cast<int>(r.integer("max_attempts", 1000, 1, 1000000));
   map.cell_edge = r.number("cell_edge", 1.0, 1e-6, 1e6);
   r.finish();
@@ -241,6 +266,12 @@ PlannerScope parse_scope(const json& j, const std::string& where, const SweepCon
   return s;
 }
 
+json looser_json(const std::vector<ModelDeviation>& deviations) {
+  json looser = json::object();
+  for (const auto& d : deviations) looser[d.param] = d.value;
+  return looser;
+}
+
 std::vector<PlannerEntry> parse_planners(ObjectReader& r, const SweepConfig& sweep) {
   std::vector<PlannerEntry> planners;
   std::set<std::string> labels;
@@ -248,6 +279,7 @@ std::vector<PlannerEntry> parse_planners(ObjectReader& r, const SweepConfig& swe
   for (std::size_t i = 0; i < arr.size(); ++i) {
     const std::string where = "planners[" + std::to_string(i) + "]";
     PlannerEntry e;
+    json stated_looser;
     if (arr[i].is_string()) {
       e.name = arr[i].get<std::string>();
     } else if (arr[i].is_object()) {
@@ -257,6 +289,9 @@ std::vector<PlannerEntry> parse_planners(ObjectReader& r, const SweepConfig& swe
       e.label = p.string("label", "");
       if (p.has("params")) e.params = p.raw("params");
       if (p.has("only")) e.only = parse_scope(p.raw("only"), where, sweep);
+      // Written by config_as_run (a report's config, an isolation worker's): derived, so it is
+      // only checked against what the parameters give below.
+      if (p.has("looser_than_model")) stated_looser = p.raw("looser_than_model");
       p.finish();
     } else {
       throw InputError(
@@ -267,7 +302,24 @@ std::vector<PlannerEntry> parse_planners(ObjectReader& r, const SweepConfig& swe
     if (!labels.insert(e.label).second)
       throw InputError(where + ".label: \"" + e.label +
                        "\" appears twice (give one of them a distinct \"label\")");
-    e.resolved = configure_planner(e.name, e.params, where + " (" + e.label + ")").params.values();
+    ConfiguredPlanner configured =
+        configure_planner(e.name, e.params, where + " (" + e.label + ")", sweep.collision);
+    e.resolved = configured.params.values();
+    e.looser_than_model = std::move(configured.looser_than_model);
+    if (!stated_looser.is_null() && stated_looser != looser_json(e.looser_than_model))
+      throw InputError(where + ".looser_than_model: " + stated_looser.dump() +
+                       " is not what its params give (" + looser_json(e.looser_than_model).dump() +
+                       ")");
+    // A planner set looser than the model is a variant: its label must say it is not the
+    // registry's planner, whose results are those under the model.
+    if (!e.looser_than_model.empty() && e.label == e.name) {
+      const ModelDeviation& d = e.looser_than_model.front();
+      throw InputError(where + ".params." + d.param + ": " + d.value.dump() +
+                       " is looser than the sweep's collision model (" +
+                       to_string(sweep.collision) + ", which asks for " + d.model.dump() +
+                       "); such a variant needs a \"label\" of its own, and its paths are "
+                       "still judged under the model");
+    }
     planners.push_back(std::move(e));
   }
   return planners;
@@ -285,6 +337,8 @@ SweepConfig parse_config(const json& j) {
   if (r.has("densities")) c.densities = parse_densities(r);
   resolve_generators(c.generators, c.sizes);
   c.maps_per_cell = static_cast<int>(r.integer("maps_per_cell", c.maps_per_cell, 1, 10000000));
+  if (r.has("collision")) c.collision = parse_collision(r.raw("collision"));
+  c.map.solvable_rule = c.collision.corner_rule;
   if (r.has("map")) parse_map_options(r.raw("map"), c.map);
   if (!r.has("planners")) throw InputError("planners: missing (list at least one planner)");
   c.planners = parse_planners(r, c);
@@ -363,6 +417,7 @@ json config_as_run(const SweepConfig& c) {
   json planners = json::array();
   for (const auto& p : c.planners) {
     json entry = {{"label", p.label}, {"name", p.name}, {"params", p.resolved}};
+    if (!p.looser_than_model.empty()) entry["looser_than_model"] = looser_json(p.looser_than_model);
     // Written only when scoped, so configs without scopes keep their hash (and journals).
     if (!p.only.everywhere()) {
       // Only the axes it restricts: parse_config reads this back (isolation workers get it).
@@ -385,6 +440,9 @@ json config_as_run(const SweepConfig& c) {
           {"sizes", sizes_json(c.sizes)},
           {"densities", c.densities},
           {"maps_per_cell", c.maps_per_cell},
+          {"collision",
+           {{"corner_rule", std::string(to_string(c.collision.corner_rule))},
+            {"clearance", c.collision.clearance}}},
           {"map",
            {{"endpoints", m.endpoints == EndpointMode::corners ? "corners" : "random"},
             {"min_distance", m.min_distance},

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "algos/registry.h"
+#include "core/collision_model.h"
 #include "engine/metrics.h"
 #include "generators/map_generators.h"
 #include "generators/registry.h"
@@ -48,6 +49,9 @@ struct PlannerEntry {
   nlohmann::json params = nlohmann::json::object();  // as given
   nlohmann::json resolved;                           // every parameter with its value
   PlannerScope only;
+  // Parameters set looser than the sweep's collision model (the entry is then a labelled
+  // variant, judged under the model all the same).
+  std::vector<ModelDeviation> looser_than_model;
 };
 
 struct SweepConfig {
@@ -57,6 +61,9 @@ struct SweepConfig {
   std::vector<GridSize> sizes = {{64, 64}};
   std::vector<double> densities = {0.2};
   int maps_per_cell = 100;
+  // What every path of the sweep is judged under, and the default of every planner's own rule
+  // and clearance (docs/METRICS.md "Collision model").
+  CollisionModel collision;
   MapSpec map;  // endpoints, require_solvable, ...; generator, shape, size, density per cell
   std::vector<PlannerEntry> planners;
   std::string baseline;        // planner label the paired comparisons use

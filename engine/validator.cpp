@@ -33,6 +33,11 @@ ValidationResult fail(std::string reason) { return {false, std::move(reason)}; }
 
 ValidationResult validate_path(const Grid& grid, Cell start, Cell goal, std::span<const Point> path,
                                CornerRule rule) {
+  return validate_path(grid, start, goal, path, SightRule::cells(rule));
+}
+
+ValidationResult validate_path(const Grid& grid, Cell start, Cell goal, std::span<const Point> path,
+                               const SightRule& sight) {
   if (path.empty()) return fail("empty path");
   for (std::size_t i = 0; i < path.size(); ++i) {
     const Point p = path[i];
@@ -46,7 +51,6 @@ ValidationResult validate_path(const Grid& grid, Cell start, Cell goal, std::spa
   if (!near(path.back(), centre(goal)))
     return fail("ends at " + fmt(path.back()) + " not at goal " + fmt(centre(goal)));
 
-  const SightRule sight = SightRule::cells(rule);
   const std::size_t segments = path.size() == 1 ? 1 : path.size() - 1;
   for (std::size_t s = 0; s < segments; ++s) {
     const Point a = path[s];
@@ -57,12 +61,18 @@ ValidationResult validate_path(const Grid& grid, Cell start, Cell goal, std::spa
     switch (hit.kind) {
       case SightHit::Kind::corner:
         return fail(what + " cuts a corner of obstacle cell " + fmt(hit.cell) + " under " +
-                    std::string(to_string(rule)));
+                    std::string(to_string(sight.corners)));
       case SightHit::Kind::cell:
         return fail(what +
                     (grid.in_bounds(hit.cell) ? " touches obstacle cell "
                                               : " touches the border at cell ") +
                     fmt(hit.cell));
+      case SightHit::Kind::clearance: {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, " passes closer than %.6g to the centre of obstacle cell ",
+                      sight.radius);
+        return fail(what + buf + fmt(hit.cell));
+      }
       default:
         return fail(what + " leaves the grid");
     }

@@ -8,6 +8,7 @@
 
 #include "core/corner_rule.h"
 #include "core/grid.h"
+#include "core/line_of_sight.h"
 
 namespace agv {
 
@@ -24,5 +25,9 @@ inline constexpr double kEndpointTolerance = 1e-9;
 // coordinate; every segment free under SightRule::cells(rule) (a one-point path: the point).
 ValidationResult validate_path(const Grid& grid, Cell start, Cell goal, std::span<const Point> path,
                                CornerRule rule);
+// The same under any sight rule: a sweep's collision model (CollisionModel::sight()), whose
+// clearance adds "every obstacle cell centre at least clearance + 0.5 from every segment".
+ValidationResult validate_path(const Grid& grid, Cell start, Cell goal, std::span<const Point> path,
+                               const SightRule& sight);
 
 }  // namespace agv

@@ -69,7 +69,10 @@ ParamDecls<PostprocessOptions> smoothing_decls(SmoothingMode default_mode) {
           "half of each adjacent segment; paper 002: one cell)")
       .integer(
           "bezier_points", [](PostprocessOptions& o) -> int& { return o.bezier.points_per_curve; },
-          10, 2, 1000, "Bezier: samples per corner curve, its two ends included");
+          10, 2, 1000, "Bezier: samples per corner curve, its two ends included")
+      .number("curve_clearance", &PostprocessOptions::curve_clearance, 0.0, 0.0, 10.0,
+              "clearance the smoothed curve keeps, in cells: every obstacle centre at least "
+              "curve_clearance + 0.5 away (0 = the curve touches no obstacle cell)");
   return d;
 }
 
@@ -158,7 +161,7 @@ void finish_path(const Grid& grid, const PostprocessOptions& options, WorkingPat
   result.waypoints_before_sampling = static_cast<std::int64_t>(path.points.size());
   if (options.smoothing != SmoothingMode::none) {
     PhaseTimer timer(result, "smoothing");
-    apply_smoothing(grid, options, SightRule::cells(result.rule), path);
+    apply_smoothing(grid, options, sight_rule(result.rule, options.curve_clearance), path);
   }
   result.path = std::move(path.points);
 }

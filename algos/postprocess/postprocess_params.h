@@ -37,6 +37,9 @@ struct PostprocessOptions {
   ShortcutMode shortcut = ShortcutMode::none;
   double shortcut_margin = 0.0;  // cells; 0 = SightRule::cells
   SmoothingMode smoothing = SmoothingMode::none;
+  // cells; 0 = SightRule::cells. Follows the sweep's collision-model clearance (algos/registry.h):
+  // the curve keeps what the path is judged under, the shortcut keeps the planner's own margin.
+  double curve_clearance = 0.0;
   BezierOptions bezier;
   BsplineOptions bspline;
 };
@@ -46,7 +49,7 @@ ParamDecls<PostprocessOptions> shortcut_decls(ShortcutMode default_mode);
 // `shortcut_margin` alone, for a variant whose paper fixes the shortcut mode (alt_astar: 0,
 // kin_astar: 1, paper 004's one-cell safety distance) and keeps only its clearance a parameter.
 ParamDecls<PostprocessOptions> shortcut_margin_decls(double default_margin);
-// `smoothing`, `curve_step`, `bezier_distance`, `bezier_points`.
+// `smoothing`, `curve_step`, `bezier_distance`, `bezier_points`, `curve_clearance`.
 ParamDecls<PostprocessOptions> smoothing_decls(SmoothingMode default_mode);
 
 // The collision rule of a step: cells under the corner rule, or that plus a margin in cells.
@@ -74,7 +77,7 @@ void apply_smoothing(const Grid& grid, const PostprocessOptions& options, const 
 
 // The last step of every pipeline: records the waypoint count before curve sampling as the extra
 // metric "key_points", applies the smoothing (phase "smoothing") under the result's corner rule
-// and moves the polyline into result.path.
+// and `curve_clearance`, and moves the polyline into result.path.
 void finish_path(const Grid& grid, const PostprocessOptions& options, WorkingPath& path,
                  PlanResult& result);
 

@@ -2,6 +2,18 @@
 
 namespace agv {
 
+namespace {
+// `clearance` sets the kind and the radius of the rule together (SightRule::margin), whatever
+// order the parameters are read in: the corner rule is a field of its own.
+struct ClearanceField {
+  SightRule& sight;
+  void operator=(double margin) {
+    sight =
+        margin > 0.0 ? SightRule::margin(margin, sight.corners) : SightRule::cells(sight.corners);
+  }
+};
+}  // namespace
+
 ParamDecls<SightRule> segment_sight_decls(CornerRule default_rule) {
   ParamDecls<SightRule> d;
   d.choice("corner_rule", &SightRule::corners, default_rule,
@@ -11,7 +23,11 @@ ParamDecls<SightRule> segment_sight_decls(CornerRule default_rule) {
            "how an edge passing exactly through a grid vertex between two diagonal cells is "
            "judged by the line-of-sight test: allow = always; no_squeeze = unless both side "
            "cells are blocked; no_corner_cut = only when both are free (the edge touches no "
-           "obstacle cell)");
+           "obstacle cell)")
+      .number(
+          "clearance", [](SightRule& s) { return ClearanceField{s}; }, 0.0, 0.0, 10.0,
+          "cells every edge keeps from obstacles: each obstacle cell centre at least "
+          "clearance + 0.5 away (0 = the edge touches no obstacle cell)");
   return d;
 }
 

@@ -14,6 +14,9 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kStartNode = 0;
 constexpr int kGoalNode = 1;
 constexpr int kFirstBendNode = 2;
+// Bend points are grouped in tiles of kTile x kTile vertices, so an expansion can skip whole
+// tiles on the wrong side of a taut bend or too far for the goal's cost so far.
+constexpr int kTile = 8;
 
 // The padded occupancy: blocked(x, y) is valid for x in [-1, width], y in [-1, height].
 struct Cells {
@@ -181,31 +184,65 @@ void collect_nodes(const Grid& grid, Cell start, Cell goal, bool allow, std::uin
   const std::uint8_t* occ = grid.occupancy();
   const int stride = grid.stride();
   const auto& reached = s.reached;
-  for (int j = 1; j < grid.height(); ++j) {
-    // Padded indices of cells (i - 1, j - 1) and (i - 1, j) for i = 1.
-    const int up = grid.index(0, j - 1);
-    const int down = up + stride;
-    for (int i = 1; i < grid.width(); ++i) {
-      const int nw = up + i - 1;
-      const int ne = nw + 1;
-      const int sw = down + i - 1;
-      const int se = sw + 1;
-      const int bits =
-          (occ[nw] != 0) | (occ[ne] != 0) << 1 | (occ[sw] != 0) << 2 | (occ[se] != 0) << 3;
-      if (std::popcount(static_cast<unsigned>(bits)) == 1) {
-        // The free cells around a single blocked one are edge-connected: test one of them.
-        const int probe = bits == 1 ? se : nw;
-        if (reached[probe] != gen) continue;
-        const int bx = (bits == 2 || bits == 8) ? 1 : -1;
-        const int by = (bits == 4 || bits == 8) ? 1 : -1;
-        add({2 * i, 2 * j}, bx, by, false);
-      } else if (allow && (bits == 0b1001 || bits == 0b0110)) {
-        const int probe = bits == 0b1001 ? ne : nw;
-        if (reached[probe] != gen) continue;
-        add({2 * i, 2 * j}, bits == 0b1001 ? 1 : -1, 1, true);
+  // Vertices (i, j), i in [0, width], j in [0, height], tile by tile.
+  s.tiles_x = grid.width() / kTile + 1;
+  s.tiles_y = grid.height() / kTile + 1;
+  s.tile_begin.assign(static_cast<std::size_t>(s.tiles_x) * s.tiles_y + 1, 0);
+  for (int ty = 0; ty < s.tiles_y; ++ty) {
+    for (int tx = 0; tx < s.tiles_x; ++tx) {
+      s.tile_begin[static_cast<std::size_t>(ty) * s.tiles_x + tx] = static_cast<int>(s.node.size());
+      const int j_end = std::min(grid.height(), (ty + 1) * kTile);
+      const int i_end = std::min(grid.width(), (tx + 1) * kTile);
+      for (int j = std::max(1, ty * kTile); j < j_end; ++j) {
+        // Padded indices of cells (i - 1, j - 1) and (i - 1, j) for i = 0.
+        const int up = grid.index(0, j - 1) - 1;
+        const int down = up + stride;
+        for (int i = std::max(1, tx * kTile); i < i_end; ++i) {
+          const int nw = up + i;
+          const int ne = nw + 1;
+          const int sw = down + i;
+          const int se = sw + 1;
+          const int bits =
+              (occ[nw] != 0) | (occ[ne] != 0) << 1 | (occ[sw] != 0) << 2 | (occ[se] != 0) << 3;
+          if (std::popcount(static_cast<unsigned>(bits)) == 1) {
+            // The free cells around a single blocked one are edge-connected: test one of them.
+            const int probe = bits == 1 ? se : nw;
+            if (reached[probe] != gen) continue;
+            const int bx = (bits == 2 || bits == 8) ? 1 : -1;
+            const int by = (bits == 4 || bits == 8) ? 1 : -1;
+            add({2 * i, 2 * j}, bx, by, false);
+          } else if (allow && (bits == 0b1001 || bits == 0b0110)) {
+            const int probe = bits == 0b1001 ? ne : nw;
+            if (reached[probe] != gen) continue;
+            add({2 * i, 2 * j}, bits == 0b1001 ? 1 : -1, 1, true);
+          }
+        }
       }
     }
   }
+  s.tile_begin.back() = static_cast<int>(s.node.size());
+}
+
+// Lower bound of the distance from p to the points of tile (tx, ty)'s vertex box (doubled).
+double distance_to_tile(HalfPoint p, int tx, int ty) {
+  const int lo_x = 2 * tx * kTile;
+  const int lo_y = 2 * ty * kTile;
+  const int hi_x = lo_x + 2 * (kTile - 1);
+  const int hi_y = lo_y + 2 * (kTile - 1);
+  const double dx = p.x < lo_x ? lo_x - p.x : p.x > hi_x ? p.x - hi_x : 0;
+  const double dy = p.y < lo_y ? lo_y - p.y : p.y > hi_y ? p.y - hi_y : 0;
+  return std::sqrt(dx * dx + dy * dy);
+}
+
+void relax(int u, int w, HalfPoint pu, double gu, const Cells& cells, bool allow,
+           AnyAngleScratch& s) {
+  const double ng = gu + half_distance(pu, s.node[w]);
+  if (ng >= s.g[w] || ng + s.h[w] >= s.g[kGoalNode]) return;
+  if (!visible(cells, pu, s.node[w], allow)) return;
+  s.g[w] = ng;
+  s.parent[w] = u;
+  s.heap.push_back({ng + s.h[w], ng, w});
+  std::push_heap(s.heap.begin(), s.heap.end(), scratch_heap_worse);
 }
 
 void expand(int u, const Cells& cells, bool allow, AnyAngleScratch& s) {
@@ -217,29 +254,48 @@ void expand(int u, const Cells& cells, bool allow, AnyAngleScratch& s) {
   const int ubx = s.block_x[u];
   const int uby = s.block_y[u];
   const bool upinch = s.pinch[u] != 0;
-  const int n = static_cast<int>(s.node.size());
-  for (int w = kGoalNode; w < n; ++w) {
-    if (s.closed[w]) continue;
-    const HalfPoint out{s.node[w].x - pu.x, s.node[w].y - pu.y};
-    if (w >= kFirstBendNode) {
-      // The segment must neither leave w into its blocked quadrant (no bend there can be taut)
-      // nor arrive through it (not visible); for a pinch, either of its two.
-      const int ax = out.x * s.block_x[w];
-      const int ay = out.y * s.block_y[w];
-      if ((ax > 0 && ay > 0) || (ax < 0 && ay < 0)) continue;
+  auto taut = [&](HalfPoint out) {
+    return !bend || taut_around(ubx, uby, back, out) ||
+           (upinch && taut_around(-ubx, -uby, back, out));
+  };
+  if (!s.closed[kGoalNode] && taut({s.node[kGoalNode].x - pu.x, s.node[kGoalNode].y - pu.y}))
+    relax(u, kGoalNode, pu, gu, cells, allow, s);
+  // A taut bend leaves on the far side of each axis through u from its parent (the blocked
+  // quadrant's edges lie between the two segments): only the tiles on that side.
+  int tx0 = 0;
+  int tx1 = s.tiles_x - 1;
+  int ty0 = 0;
+  int ty1 = s.tiles_y - 1;
+  if (bend) {
+    const int tu_x = pu.x / 2 / kTile;
+    const int tu_y = pu.y / 2 / kTile;
+    if (back.x > 0) tx1 = tu_x;
+    if (back.x < 0) tx0 = tu_x;
+    if (back.y > 0) ty1 = tu_y;
+    if (back.y < 0) ty0 = tu_y;
+  }
+  const HalfPoint goal = s.node[kGoalNode];
+  for (int ty = ty0; ty <= ty1; ++ty) {
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      const std::size_t t = static_cast<std::size_t>(ty) * s.tiles_x + tx;
+      const int begin = s.tile_begin[t];
+      const int end = s.tile_begin[t + 1];
+      if (begin == end) continue;
+      // No node of the tile can improve on the goal's cost so far.
+      if (gu + distance_to_tile(pu, tx, ty) + distance_to_tile(goal, tx, ty) >= s.g[kGoalNode])
+        continue;
+      for (int w = begin; w < end; ++w) {
+        if (s.closed[w]) continue;
+        const HalfPoint out{s.node[w].x - pu.x, s.node[w].y - pu.y};
+        // The segment must neither leave w into its blocked quadrant (no bend there can be
+        // taut) nor arrive through it (not visible); for a pinch, either of its two.
+        const int ax = out.x * s.block_x[w];
+        const int ay = out.y * s.block_y[w];
+        if ((ax > 0 && ay > 0) || (ax < 0 && ay < 0)) continue;
+        if (!taut(out)) continue;
+        relax(u, w, pu, gu, cells, allow, s);
+      }
     }
-    if (bend) {
-      const bool taut =
-          taut_around(ubx, uby, back, out) || (upinch && taut_around(-ubx, -uby, back, out));
-      if (!taut) continue;
-    }
-    const double ng = gu + half_distance(pu, s.node[w]);
-    if (ng >= s.g[w] || ng + s.h[w] >= s.g[kGoalNode]) continue;
-    if (!visible(cells, pu, s.node[w], allow)) continue;
-    s.g[w] = ng;
-    s.parent[w] = u;
-    s.heap.push_back({ng + s.h[w], ng, w});
-    std::push_heap(s.heap.begin(), s.heap.end(), scratch_heap_worse);
   }
 }
 

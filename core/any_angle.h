@@ -48,6 +48,11 @@ struct AnyAngleScratch {
   std::vector<HalfPoint> node;
   std::vector<std::int8_t> block_x, block_y;  // a blocked quadrant's direction from the node
   std::vector<std::uint8_t> pinch;            // the node is a pinch (both diagonals blocked)
+  // Bend nodes in tile order: tile (tx, ty)'s are [tile_begin[t], tile_begin[t + 1]) for
+  // t = ty * tiles_x + tx.
+  std::vector<int> tile_begin;
+  int tiles_x = 0;
+  int tiles_y = 0;
   std::vector<std::uint8_t> closed;
   std::vector<double> g, h;
   std::vector<int> parent;

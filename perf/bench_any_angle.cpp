@@ -1,7 +1,7 @@
 // The any-angle reference (perf/README.md "Any-angle reference", core/any_angle.h): the bound of
 // one start/goal query per map, as the engine computes it once per map, on uniform maps of the
 // sweep sizes and larger (corner to corner, solvable under no_corner_cut), under allow and
-// no_corner_cut, plus the MovingAI 512x512 maps with a subset of their scenario queries.
+// no_corner_cut.
 //
 // One iteration computes the bound of every map (query) of the case once with one reused
 // scratch. Counters: maps_per_s (queries per CPU second), nodes_per_map (graph nodes: start,
@@ -15,7 +15,6 @@
 
 #include "core/any_angle.h"
 #include "generators/map_generators.h"
-#include "generators/movingai.h"
 #include "perf/bench_maps.h"
 
 namespace agv {
@@ -42,19 +41,6 @@ Case uniform_case(int side, double density, int maps) {
     c.grids.push_back(std::make_unique<Grid>(std::move(m.grid)));
     c.queries.push_back({c.grids.back().get(), m.start, m.goal});
   }
-  return c;
-}
-
-// Every k-th scenario of the file (the files list buckets in increasing order, so the subset
-// spans short and long queries).
-Case movingai_case(const std::string& map, int queries) {
-  const std::string path = std::string(AGV_SHARED_MAPS) + "/" + map;
-  Case c{map, {}, {}};
-  c.grids.push_back(std::make_unique<Grid>(read_map(path)));
-  const auto scen = read_scen(path + ".scen");
-  const std::size_t stride = std::max<std::size_t>(1, scen.size() / queries);
-  for (std::size_t q = 0; q < scen.size(); q += stride)
-    c.queries.push_back({c.grids.front().get(), scen[q].start, scen[q].goal});
   return c;
 }
 
@@ -85,10 +71,8 @@ int main(int argc, char** argv) {
   for (int side : {16, 32, 64, 128})
     for (double density : {0.1, 0.2, 0.3})
       cases.push_back(std::make_unique<Case>(uniform_case(side, density, 8)));
-  for (double density : {0.1, 0.3})
-    cases.push_back(std::make_unique<Case>(uniform_case(512, density, 2)));
-  for (const char* map : {"random512-10-0.map", "maze512-1-0.map", "8room_000.map"})
-    cases.push_back(std::make_unique<Case>(movingai_case(map, 8)));
+  // One large map: the search looks at every bend point of the component per expansion.
+  cases.push_back(std::make_unique<Case>(uniform_case(512, 0.1, 1)));
   for (CornerRule rule : {CornerRule::no_corner_cut, CornerRule::allow}) {
     for (const auto& c : cases) {
       const Case* cp = c.get();

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <numbers>
+#include <utility>
 
 namespace agv {
 namespace {
@@ -17,6 +19,8 @@ constexpr int kFirstBendNode = 2;
 // Bend points are grouped in tiles of kTile x kTile vertices, so an expansion can skip whole
 // tiles on the wrong side of a taut bend or too far for the goal's cost so far.
 constexpr int kTile = 8;
+constexpr double kUpperMargin = 1e-9;
+constexpr std::size_t kUpperBoundNodes = 512;
 
 // The padded occupancy: blocked(x, y) is valid for x in [-1, width], y in [-1, height].
 struct Cells {
@@ -166,6 +170,51 @@ std::uint32_t flood_fill(const Grid& grid, int from, CornerRule rule, AnyAngleSc
   return gen;
 }
 
+// Length of the shortest 8-connected path from `from` to `to` under `rule` (straight 1,
+// diagonal sqrt 2), which must be connected: a path of the closure of free space under the same
+// pinch rule, so an upper bound of the reference that prunes the search before it has reached
+// the goal. Doubled, like the search's lengths.
+double grid_upper_bound(const Grid& grid, int from, int to, CornerRule rule, AnyAngleScratch& s) {
+  const std::uint8_t* occupancy = grid.occupancy();
+  const int stride = grid.stride();
+  std::array<int, 8> offset{};
+  std::array<double, 8> cost{};
+  for (int d = 0; d < 8; ++d) {
+    offset[d] = kDy[d] * stride + kDx[d];
+    cost[d] = is_diagonal(d) ? 2.0 * std::numbers::sqrt2 : 2.0;
+  }
+  const MoveTable& table = move_table(rule);
+  s.grid_g.assign(static_cast<std::size_t>(grid.padded_size()), kInfinity);
+  auto& open = s.grid_open;
+  open.clear();
+  const auto later = [](const std::pair<double, int>& a, const std::pair<double, int>& b) {
+    return a.first > b.first || (a.first == b.first && a.second > b.second);
+  };
+  s.grid_g[from] = 0.0;
+  open.push_back({0.0, from});
+  while (!open.empty()) {
+    std::pop_heap(open.begin(), open.end(), later);
+    const auto [g, i] = open.back();
+    open.pop_back();
+    if (g > s.grid_g[i]) continue;
+    if (i == to) return g;
+    unsigned free_mask = 0;
+    for (int d = 0; d < 8; ++d) free_mask |= (occupancy[i + offset[d]] == 0 ? 1U : 0U) << d;
+    unsigned moves = table[free_mask];
+    while (moves != 0) {
+      const int d = std::countr_zero(moves);
+      moves &= moves - 1;
+      const int j = i + offset[d];
+      const double ng = g + cost[d];
+      if (ng >= s.grid_g[j]) continue;
+      s.grid_g[j] = ng;
+      open.push_back({ng, j});
+      std::push_heap(open.begin(), open.end(), later);
+    }
+  }
+  return kInfinity;
+}
+
 // Nodes: start, goal, then every bend point next to a cell of the start's component.
 void collect_nodes(const Grid& grid, Cell start, Cell goal, bool allow, std::uint32_t gen,
                    AnyAngleScratch& s) {
@@ -237,7 +286,7 @@ double distance_to_tile(HalfPoint p, int tx, int ty) {
 void relax(int u, int w, HalfPoint pu, double gu, const Cells& cells, bool allow,
            AnyAngleScratch& s) {
   const double ng = gu + half_distance(pu, s.node[w]);
-  if (ng >= s.g[w] || ng + s.h[w] >= s.g[kGoalNode]) return;
+  if (ng >= s.g[w] || ng + s.h[w] >= s.g[kGoalNode] || ng + s.h[w] > s.upper) return;
   if (!visible(cells, pu, s.node[w], allow)) return;
   s.g[w] = ng;
   s.parent[w] = u;
@@ -282,8 +331,8 @@ void expand(int u, const Cells& cells, bool allow, AnyAngleScratch& s) {
       const int end = s.tile_begin[t + 1];
       if (begin == end) continue;
       // No node of the tile can improve on the goal's cost so far.
-      if (gu + distance_to_tile(pu, tx, ty) + distance_to_tile(goal, tx, ty) >= s.g[kGoalNode])
-        continue;
+      const double through = gu + distance_to_tile(pu, tx, ty) + distance_to_tile(goal, tx, ty);
+      if (through >= s.g[kGoalNode] || through > s.upper) continue;
       for (int w = begin; w < end; ++w) {
         if (s.closed[w]) continue;
         const HalfPoint out{s.node[w].x - pu.x, s.node[w].y - pu.y};
@@ -316,6 +365,14 @@ std::optional<double> search(const Grid& grid, Cell start, Cell goal, CornerRule
   if (s.reached[grid.index(goal)] != gen) return std::nullopt;
 
   collect_nodes(grid, start, goal, allow, gen, s);
+  // Worth its cost on maps with many bend points only (perf/README.md "Any-angle reference");
+  // it prunes nodes whose f exceeds the optimum, so it never changes the result. The grid
+  // optimum's rounding may differ from the search's in the last bits: a margin keeps an optimum
+  // equal to it (a straight axis-parallel path) from being pruned.
+  s.upper = kInfinity;
+  if (s.node.size() > kUpperBoundNodes)
+    s.upper = grid_upper_bound(grid, grid.index(start), grid.index(goal), connectivity, s) *
+              (1 + kUpperMargin);
   const auto n = s.node.size();
   s.g.assign(n, kInfinity);
   s.h.resize(n);

@@ -16,13 +16,15 @@
 // Method: A* with the Euclidean heuristic over the visibility graph of start, goal and the
 // possible bend points (convex obstacle corners: vertices with exactly one blocked cell around
 // them; under allow also the pinch vertices), edges generated lazily with the taut-path
-// conditions, visibility decided exactly in integers (coordinates doubled, so vertices and cell
-// centres are integers). This visibility ("every point in some closed free square, no pinch
-// crossed unless allow") is NOT segment_free's test, which asks the closed segment to stay off
-// every obstacle square: a segment may touch an obstacle corner here.
+// conditions and, on large maps, the 8-connected optimum as an upper bound; visibility decided
+// exactly in integers (coordinates doubled, so vertices and cell centres are integers). This
+// visibility ("every point in some closed free square, no pinch crossed unless allow") is NOT
+// segment_free's test, which asks the closed segment to stay off every obstacle square: a
+// segment may touch an obstacle corner here.
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/corner_rule.h"
@@ -62,6 +64,10 @@ struct AnyAngleScratch {
     int node;
   };
   std::vector<Entry> heap;
+  // The 8-connected optimum under the same connectivity: an upper bound that prunes the search.
+  std::vector<double> grid_g;
+  std::vector<std::pair<double, int>> grid_open;
+  double upper = 0.0;
 };
 
 // Length in cells of the shortest path from centre(start) to centre(goal) in the closure of

@@ -332,6 +332,42 @@ TEST(Fusion, RunMetricsCoverTheUnknownCellsAndTakeTheSimulatedTime) {
               unknown_nearest);
 }
 
+TEST(Fusion, LocalGoalsAreTheKeyNodesOrTheCurveSamples) {
+  // fusion_kin_dwa's global planner is kin_astar (no_corner_cut, shortcut_margin raised to the
+  // 0.6 floor). key_nodes (default, paper 004): the local goals are the key points of its path
+  // before the B-spline; curve_samples: those of the sampled B-spline.
+  const nlohmann::json quiet = {{"dynamic_obstacles", 0}, {"unknown_obstacles", 0}};
+  nlohmann::json curve = quiet;
+  curve["local_goals"] = "curve_samples";
+  const ConfiguredPlanner nodes_run = configure_planner("fusion_kin_dwa", quiet, "t");
+  const ConfiguredPlanner curve_run = configure_planner("fusion_kin_dwa", curve, "t");
+  EXPECT_EQ(nodes_run.params.choice("local_goals"), "key_nodes");
+  const nlohmann::json global = {{"corner_rule", "no_corner_cut"}, {"shortcut_margin", 0.6}};
+  nlohmann::json polyline = global;
+  polyline["smoothing"] = "none";
+  const ConfiguredPlanner kin_nodes = configure_planner("kin_astar", polyline, "t");
+  const ConfiguredPlanner kin_curve = configure_planner("kin_astar", global, "t");
+  std::size_t node_goals = 0, curve_goals = 0;
+  for (int m = 0; m < 12; ++m) {
+    const MapInstance map = random_map(0.2, m);
+    Scratch scratch;
+    auto plan = [&](const ConfiguredPlanner& c) {
+      Rng rng(5, m);
+      return c.planner->plan({map.grid, map.start, map.goal, rng, scratch});
+    };
+    const PlanResult a = plan(nodes_run), b = plan(curve_run);
+    ASSERT_TRUE(a.trajectory && b.trajectory) << "map " << m;
+    const PlanResult pa = plan(kin_nodes), pb = plan(kin_curve);
+    ASSERT_TRUE(pa.ok() && pb.ok()) << "map " << m;
+    EXPECT_EQ(a.trajectory->key_points, fusion_key_points(pa.path, 0.1)) << "map " << m;
+    EXPECT_EQ(b.trajectory->key_points, fusion_key_points(pb.path, 0.1)) << "map " << m;
+    node_goals += a.trajectory->key_points.size();
+    curve_goals += b.trajectory->key_points.size();
+  }
+  std::printf("[measured] fusion_kin_dwa local goals over 12 maps: key_nodes %zu, curve %zu\n",
+              node_goals, curve_goals);
+}
+
 TEST(Fusion, SameSeedSameTrajectory) {
   const ConfiguredPlanner c = configure_planner("fusion_kin_dwa", nlohmann::json::object(), "t");
   for (int m = 0; m < 4; ++m) {

@@ -4,6 +4,7 @@
 #include <exception>
 #include <limits>
 #include <new>
+#include <optional>
 #include <stdexcept>
 
 #include "algos/search/dijkstra.h"
@@ -76,17 +77,15 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
 
   // A simulated robot run (fusion planners) is judged from its executed trajectory by
   // engine/trajectory_judge.h, never by the grid validator and its corner rule.
-  bool judged = false;
+  std::optional<TrajectoryVerdict> verdict;
   if (r.trajectory) {
-    TrajectoryVerdict verdict =
-        judge_trajectory(map.grid(), map.start(), map.goal(), *r.trajectory);
-    for (auto& m : verdict.metrics) out.result.extra.push_back(std::move(m));
-    if (verdict.outcome != Outcome::success) {
-      out.outcome = verdict.outcome;
-      out.message = std::move(verdict.message);
+    verdict = judge_trajectory(map.grid(), map.start(), map.goal(), *r.trajectory);
+    for (const auto& m : verdict->metrics) out.result.extra.push_back(m);
+    if (verdict->outcome != Outcome::success) {
+      out.outcome = verdict->outcome;
+      out.message = std::move(verdict->message);
       return out;
     }
-    judged = true;
   }
 
   if (!r.ok()) {
@@ -110,7 +109,7 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
     return out;
   }
 
-  if (!judged) {
+  if (!verdict) {
     // Under the sweep's model, whatever rule the planner searched with (docs/METRICS.md
     // "Collision model"): a looser variant's path that breaks it is invalid, never scored.
     const ValidationResult v =
@@ -122,8 +121,8 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
     }
   }
   out.outcome = Outcome::success;
-  const PathMetrics m =
-      compute_path_metrics(map.grid(), r.path, motion, 0, r.waypoints_before_sampling);
+  PathMetrics m = compute_path_metrics(map.grid(), r.path, motion, 0, r.waypoints_before_sampling);
+  if (verdict) apply_trajectory_verdict(*verdict, map.grid().cell_edge(), m);
   const auto values = metric_values(m);
   for (std::size_t i = 0; i < values.size(); ++i) {
     // The names are one list; a mismatch is a bug caught here, not a mislabelled report.

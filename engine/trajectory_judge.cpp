@@ -187,6 +187,8 @@ TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, cons
     }
   }
 
+  out.min_clearance = min_static;
+  out.sim_time_s = tr.t.back();
   out.metrics.emplace_back("travelled_length", travelled * edge);
   out.metrics.emplace_back("sim_time_s", tr.t.back());
   out.metrics.emplace_back("control_steps", static_cast<double>(n - 1));
@@ -195,6 +197,12 @@ TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, cons
   out.metrics.emplace_back("heading_change_sum", heading_sum);
   if (n > 1) out.metrics.emplace_back("mean_abs_w", abs_w / static_cast<double>(n - 1));
   return out;
+}
+
+void apply_trajectory_verdict(const TrajectoryVerdict& verdict, double cell_edge, PathMetrics& m) {
+  m.min_clearance = verdict.min_clearance;
+  m.min_clearance_m = verdict.min_clearance * cell_edge;
+  m.motion_time_s = verdict.sim_time_s;
 }
 
 }  // namespace agv

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "algos/planner.h"
+#include "engine/metrics.h"
 #include "engine/run_executor.h"
 
 namespace agv {
@@ -42,8 +43,18 @@ struct TrajectoryVerdict {
   Outcome outcome = Outcome::invalid_path;
   std::string message;  // empty when reached
   std::vector<std::pair<std::string, double>> metrics;
+  // The two path metrics the grid alone cannot give (docs/METRICS.md "Fusion runs"): the
+  // clearance from the robot centre to every static obstacle it met, the unknown cells
+  // included, in cells; and the simulated time the run took, s.
+  double min_clearance = 0.0;
+  double sim_time_s = 0.0;
 };
 
 TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, const Trajectory& tr);
+
+// The path metrics of a fusion run's executed positions, corrected by its verdict: the grid's
+// distance transform does not know the unknown cells, and eq. 5.2e's length / speed + node time
+// per waypoint is not how long the simulated robot drove (it stopped, turned and braked).
+void apply_trajectory_verdict(const TrajectoryVerdict& verdict, double cell_edge, PathMetrics& m);
 
 }  // namespace agv

@@ -24,6 +24,7 @@ struct PlannerSetup {
   std::string global_name;                // empty: pure DWA
   std::optional<CornerRule> global_rule;  // nullopt: the planner's own
   double global_margin = -1.0;            // < 0: the planner's own
+  bool goals_from_curve = false;          // local_goals: curve_samples (true) or key_nodes
   FusionOptions drive;
   WorldSpec world;
   DwaWeights given_weights;       // each < 0: the score's default
@@ -95,8 +96,14 @@ void declare_global(ParamDecls<PlannerSetup>& d, const char* global_default,
            "cells, a floor for the global planner's `shortcut_margin` when it declares one: the "
            "planner runs with the larger of its own default and this (obstacle centres margin + "
            "0.5 away from a shortcut, so 0.6 keeps a disc of 0.35 clear of obstacle corners: "
-           "alt_astar's 0, which lets shortcuts graze them, becomes 0.6; kin_astar keeps its "
-           "1.0; a planner whose `shortcut` is none is unaffected); -1 = its own");
+           "alt_astar's 0, which lets shortcuts graze them, and kin_astar's 0.5 become 0.6; a "
+           "planner whose `shortcut` is none is unaffected); -1 = its own");
+  d.choice("local_goals", &PlannerSetup::goals_from_curve, false,
+           ChoiceTable<bool>{{"key_nodes", false}, {"curve_samples", true}},
+           "where the DWA's local goals come from when the global planner smooths its path: "
+           "key_nodes = its nodes before curve fitting (paper 004 section 3.4: the key nodes of "
+           "the de-redundant path; the planner then runs with smoothing none), curve_samples = "
+           "the key points of the sampled curve");
   d.number("key_point_tolerance", drive_field<&FusionOptions::key_point_tolerance>, 0.1, 0.0, 5.0,
            "cells: Ramer-Douglas-Peucker tolerance for the key points (local goals) of the "
            "global path; on cell-centre paths any value below 0.3 is exact collinear removal");
@@ -282,10 +289,12 @@ class FusionPlanner final : public Planner {
     const PlannerInfo* info = find_planner(s_.global_name);
     // The choices are the registered grid planners, so a validated name is always found.
     if (info == nullptr) throw std::logic_error("global_planner not validated: " + s_.global_name);
-    global_ = configure_planner(s_.global_name,
-                                global_planner_params(*info, s_.global_rule, s_.global_margin),
-                                "global_planner")
-                  .planner;
+    nlohmann::json given = global_planner_params(*info, s_.global_rule, s_.global_margin);
+    // Key nodes: the path before its curve is sampled, i.e. the planner without the curve step.
+    const bool smooths = std::any_of(info->params.begin(), info->params.end(),
+                                     [](const ParamSpec& p) { return p.name == "smoothing"; });
+    if (!s_.goals_from_curve && smooths) given["smoothing"] = "none";
+    global_ = configure_planner(s_.global_name, given, "global_planner").planner;
   }
 
   PlanResult plan(const PlanRequest& req) const override {

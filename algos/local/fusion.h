@@ -8,10 +8,12 @@
 // the known grid (its corner rule forced to no_corner_cut by default: a disc robot cannot pass
 // between diagonal obstacles); its key points (Ramer-Douglas-Peucker with key_point_tolerance,
 // on cell-centre paths exactly the turning points after collinear removal) are the DWA's
-// successive local goals; (3) the robot drives through them (algos/local/fusion_drive.h, which
-// lists our additions to the papers' loop). The planner reports the executed trajectory, the moving
-// obstacles' tracks and the unknown cells (PlanResult::trajectory) and the engine judges it
-// (engine/trajectory_judge.h). `path` is the executed positions, so the path metrics apply.
+// successive local goals, taken by default (`local_goals: key_nodes`) from its path before any
+// curve fitting, the planner then running with `smoothing: none`; (3) the robot drives through them
+// (algos/local/fusion_drive.h, which lists our additions to the papers' loop). The planner reports
+// the executed trajectory, the moving obstacles' tracks and the unknown cells
+// (PlanResult::trajectory) and the engine judges it (engine/trajectory_judge.h). `path` is the
+// executed positions, so the path metrics apply.
 //
 // Pure DWA (`dwa`): the same world and loop with start and goal as the only key points,
 // Fox's heading toward the goal, no turn speed limit.

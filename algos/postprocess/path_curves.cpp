@@ -3,7 +3,9 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "algos/postprocess/path_simplify.h"
@@ -298,58 +300,120 @@ std::vector<Point> bspline_smooth(const Grid& grid, std::span<const Point> dense
   return polygon;
 }
 
-void avoid_obstacles(const Grid& grid, std::vector<Point>& keys, const SightRule& sight,
-                     double offset, double near) {
-  if (keys.size() < 3) return;
-  // 1. Push key points away from the obstacles around them (eq. 12-13).
-  for (std::size_t i = 1; i + 1 < keys.size(); ++i) {
-    const Point k = keys[i];
-    const int cx = static_cast<int>(std::floor(k.x));
-    const int cy = static_cast<int>(std::floor(k.y));
-    double ax = 0.0, ay = 0.0;
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        if ((dx == 0 && dy == 0) || !grid.blocked(cx + dx, cy + dy)) continue;
-        const Point o = centre({cx + dx, cy + dy});
-        const double len = point_distance(k, o);
-        if (len > 0.0) {
-          ax += (o.x - k.x) / len;  // eq. 12: direction from the key point to the obstacle
-          ay += (o.y - k.y) / len;
-        }
+namespace {
+
+// |heading change| at b of a -> b -> c, in [0, pi]; 0 where a segment has no length.
+double turn_at(Point a, Point b, Point c) {
+  const double ux = b.x - a.x, uy = b.y - a.y, vx = c.x - b.x, vy = c.y - b.y;
+  if ((ux == 0.0 && uy == 0.0) || (vx == 0.0 && vy == 0.0)) return 0.0;
+  return std::abs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy));
+}
+
+// Eq. 12-13's move of key point k: offset away from the obstacles among its cell's 8
+// neighbours; nullopt when there are none or they cancel out.
+std::optional<Point> pushed_key(const Grid& grid, Point k, double offset) {
+  const int cx = static_cast<int>(std::floor(k.x));
+  const int cy = static_cast<int>(std::floor(k.y));
+  double ax = 0.0, ay = 0.0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      if ((dx == 0 && dy == 0) || !grid.blocked(cx + dx, cy + dy)) continue;
+      const Point o = centre({cx + dx, cy + dy});
+      const double len = point_distance(k, o);
+      if (len > 0.0) {
+        ax += (o.x - k.x) / len;  // eq. 12: direction from the key point to the obstacle
+        ay += (o.y - k.y) / len;
       }
     }
-    const double len = std::hypot(ax, ay);
-    if (len < 1e-9) continue;  // none, or obstacles on opposite sides: no way out
-    const Point moved{k.x - offset * ax / len, k.y - offset * ay / len};  // eq. 13
-    if (segment_free(grid, keys[i - 1], moved, sight) &&
-        segment_free(grid, moved, keys[i + 1], sight))
-      keys[i] = moved;
+  }
+  const double len = std::hypot(ax, ay);
+  if (len < 1e-9) return std::nullopt;  // none, or obstacles on opposite sides: no way out
+  return Point{k.x - offset * ax / len, k.y - offset * ay / len};  // eq. 13
+}
+
+// Section 4.2 step 3's k_insert for obstacle cell `cell` near segment a-b: the cell's vertex
+// nearest the segment, moved `offset` further from the cell centre.
+Point inserted_vertex(Cell cell, Point a, Point b, double offset) {
+  const Point c = centre(cell);
+  Point vertex{};
+  double best = std::numeric_limits<double>::infinity();
+  for (int corner = 0; corner < 4; ++corner) {
+    const Point v{c.x + ((corner & 1) ? 0.5 : -0.5), c.y + ((corner & 2) ? 0.5 : -0.5)};
+    const double e = squared_distance_to_segment(v, a, b);
+    if (e < best) {
+      best = e;
+      vertex = v;
+    }
+  }
+  const double len = point_distance(c, vertex);
+  return {vertex.x + offset * (vertex.x - c.x) / len, vertex.y + offset * (vertex.y - c.y) / len};
+}
+
+bool distinct(Point a, Point b) { return point_distance(a, b) > kSamePoint; }
+
+}  // namespace
+
+double polyline_length_cells(std::span<const Point> path) {
+  double length = 0.0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) length += point_distance(path[i], path[i + 1]);
+  return length;
+}
+
+void avoid_obstacles(const Grid& grid, std::vector<Point>& keys, const SightRule& sight,
+                     double offset, double near, double max_length) {
+  if (keys.size() < 3) return;
+  double length = polyline_length_cells(keys);
+  // An adjustment may bend the path around an obstacle (it lengthens it: that is eq. 12-13's
+  // safety detour) but never turn it back on itself, nor make it longer than `max_length`
+  // (docs/PLANNERS.md "Improved A*").
+  auto turns_ok = [](std::initializer_list<double> turns) {
+    for (double t : turns)
+      if (t > kReversalAngle) return false;
+    return true;
+  };
+  // 1. Push key points away from the obstacles around them (eq. 12-13).
+  for (std::size_t i = 1; i + 1 < keys.size(); ++i) {
+    const std::optional<Point> moved = pushed_key(grid, keys[i], offset);
+    if (!moved) continue;
+    const Point before = keys[i - 1], after = keys[i + 1];
+    if (!distinct(*moved, before) || !distinct(*moved, after)) continue;
+    const double grown = point_distance(before, *moved) + point_distance(*moved, after) -
+                         point_distance(before, keys[i]) - point_distance(keys[i], after);
+    if (length + grown > max_length) continue;
+    if (!turns_ok({i >= 2 ? turn_at(keys[i - 2], before, *moved) : 0.0,
+                   turn_at(before, *moved, after),
+                   i + 2 < keys.size() ? turn_at(*moved, after, keys[i + 2]) : 0.0}))
+      continue;
+    if (!segment_free(grid, before, *moved, sight) || !segment_free(grid, *moved, after, sight))
+      continue;
+    keys[i] = *moved;
+    length += grown;
   }
   // 2. Where a segment passes closer than `near` to an obstacle centre, bend it around that
-  //    obstacle's nearest vertex (section 4.2 step 3: k_insert).
+  //    obstacle's nearest vertex (section 4.2 step 3: k_insert). Consecutive segments often pass
+  //    the same obstacle and would insert the same vertex twice, a path that goes there, back to
+  //    the key point and there again: a point already on the path is never inserted.
   const SightRule close{SightRule::Kind::clearance, sight.corners, near};
   std::vector<Point> out{keys.front()};
   for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
     const Point a = keys[i], b = keys[i + 1];
     const SightHit hit = check_segment(grid, a, b, close);
     if (hit.kind == SightHit::Kind::clearance) {
-      const Point c = centre(hit.cell);
-      Point vertex{};
-      double best = std::numeric_limits<double>::infinity();
-      for (int corner = 0; corner < 4; ++corner) {
-        const Point v{c.x + ((corner & 1) ? 0.5 : -0.5), c.y + ((corner & 2) ? 0.5 : -0.5)};
-        const double e = squared_distance_to_segment(v, a, b);
-        if (e < best) {
-          best = e;
-          vertex = v;
-        }
-      }
-      const double len = point_distance(c, vertex);
-      const Point insert{vertex.x + offset * (vertex.x - c.x) / len,
-                         vertex.y + offset * (vertex.y - c.y) / len};
-      if (!(insert == a) && !(insert == b) && segment_free(grid, a, insert, sight) &&
-          segment_free(grid, insert, b, sight))
+      const Point insert = inserted_vertex(hit.cell, a, b, offset);
+      const bool fresh =
+          std::none_of(out.begin(), out.end(), [&](Point p) { return !distinct(p, insert); }) &&
+          std::none_of(keys.begin() + static_cast<std::ptrdiff_t>(i) + 1, keys.end(),
+                       [&](Point p) { return !distinct(p, insert); });
+      const double grown =
+          point_distance(a, insert) + point_distance(insert, b) - point_distance(a, b);
+      if (fresh && length + grown <= max_length &&
+          turns_ok({out.size() >= 2 ? turn_at(out[out.size() - 2], a, insert) : 0.0,
+                    turn_at(a, insert, b),
+                    i + 2 < keys.size() ? turn_at(insert, b, keys[i + 2]) : 0.0}) &&
+          segment_free(grid, a, insert, sight) && segment_free(grid, insert, b, sight)) {
         out.push_back(insert);
+        length += grown;
+      }
     }
     out.push_back(b);
   }

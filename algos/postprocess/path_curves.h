@@ -13,6 +13,8 @@
 // corner; a B-spline that still hits after its refits gives back its control polygon; a result
 // that fails the final check gives back the input polyline (free by precondition).
 
+#include <limits>
+#include <numbers>
 #include <span>
 #include <vector>
 
@@ -61,15 +63,26 @@ std::vector<Point> bspline_smooth(const Grid& grid, std::span<const Point> dense
                                   std::vector<int> kept, const SightRule& sight,
                                   const BsplineOptions& options = {});
 
+// Sum of the segment lengths, cells.
+double polyline_length_cells(std::span<const Point> path);
+
+// A heading change above this (150 degrees) is a reversal: the path turns back on itself.
+// avoid_obstacles refuses an adjustment that makes one (docs/PLANNERS.md "Improved A*").
+inline constexpr double kReversalAngle = 150.0 * std::numbers::pi / 180.0;
+
 // Paper 002 eq. 12-13 (section 4.2 "obstacle avoidance adjustment"), resolved in docs/PLANNERS.md:
 // 1. each interior key point with an obstacle among its cell's 8 neighbours is moved `offset`
 //    (L/2) away from them: k - offset * a / |a|, a = sum of the unit vectors from k to those
 //    obstacle centres (eq. 12 direction, eq. 13 move);
 // 2. where a segment then passes closer than `near` (L) to an obstacle cell centre, the vertex of
-//    that cell nearest the segment, moved `offset` away from the cell centre, is inserted.
-// Every move and insertion is kept only when the segments it creates are free under `sight`,
-// so a free polyline stays free.
+//    that cell nearest the segment, moved `offset` away from the cell centre, is inserted, unless
+//    that point is already on the polyline.
+// A move or insertion is kept only when the segments it creates are free under `sight`, no
+// vertex it changes turns by more than kReversalAngle, and the polyline stays no longer than
+// `max_length` (the improved A* passes its search path's length). So a free polyline stays free,
+// and the adjustment makes no reversal the input did not have.
 void avoid_obstacles(const Grid& grid, std::vector<Point>& keys, const SightRule& sight,
-                     double offset = 0.5, double near = 1.0);
+                     double offset = 0.5, double near = 1.0,
+                     double max_length = std::numeric_limits<double>::infinity());
 
 }  // namespace agv

@@ -18,6 +18,8 @@
 // stops as soon as min f of EITHER open list is >= mu; mu is then optimal. With an inconsistent
 // heuristic (e.g. euclidean under diagonal_cost < sqrt 2, or octile_as_printed) the closed set
 // loses that guarantee; the default octile is consistent for every diagonal_cost in [1, 2].
+// `meet: first` (paper 002's variant, docs/PLANNERS.md) drops that test and stops at the first
+// cell closed by both searches: not optimal in general.
 // Moves are symmetric under every corner rule (a diagonal's two side cells are the same both
 // ways), so the backward search expands with the same move table.
 //
@@ -66,9 +68,11 @@ struct MeetingListener {
   int* meet;
 };
 
+enum class Meet { optimal, first };
+
 template <class H>
 BidirOutcome bidir_search(const Grid& grid, Cell start, Cell goal, const GridSearchSetup& setup,
-                          const Deadline& deadline, H h_fn, BidirBuffers& buffers) {
+                          Meet meet, const Deadline& deadline, H h_fn, BidirBuffers& buffers) {
   using open_key::index_of;
   const GridExpander expander(grid, setup);
   for (GridSearchBuffers& b : buffers.side) b.begin(grid.padded_size());
@@ -101,7 +105,8 @@ BidirOutcome bidir_search(const Grid& grid, Cell start, Cell goal, const GridSea
     // A list that ran empty has labelled everything reachable from its source: mu is final.
     if (side.open.empty() || other.open.empty()) break;
     // Stopping test: either list's min f bounds every path not yet found from below.
-    if (f_of(s, index_of(side.open.top())) >= mu || f_of(1 - s, index_of(other.open.top())) >= mu)
+    if (meet == Meet::optimal &&
+        (f_of(s, index_of(side.open.top())) >= mu || f_of(1 - s, index_of(other.open.top())) >= mu))
       break;
     if ((out.expanded & (kDeadlineInterval - 1)) == 0 && deadline.expired()) {
       out.failure = Failure::limit;
@@ -109,6 +114,11 @@ BidirOutcome bidir_search(const Grid& grid, Cell start, Cell goal, const GridSea
     }
     const int i = side.pop_and_close();
     ++out.expanded;
+    // Meet-first: the path through the first cell both searches have closed.
+    if (meet == Meet::first && other.stamp[i] == other.closed_stamp) {
+      out.meet = i;
+      break;
+    }
     expander.expand(i, side.nodes[i].g, policies[s], side, listeners[s]);
     s = 1 - s;  // strict alternation
   }
@@ -140,12 +150,18 @@ void trace_meeting(const Grid& grid, const BidirBuffers& buffers, int meet,
 
 struct BidirOptions {
   GridSearchOptions search;
+  Meet meet = Meet::optimal;
   PostprocessOptions post;  // smoothing only
 };
 
 ParamDecls<BidirOptions> bidir_decls() {
   ParamDecls<BidirOptions> d;
   d.include(&BidirOptions::search, grid_search_decls(CornerRule::allow, Heuristic::octile))
+      .choice("meet", &BidirOptions::meet, Meet::optimal,
+              ChoiceTable<Meet>{{"optimal", Meet::optimal}, {"first", Meet::first}},
+              "stopping rule: optimal = when either list's min f reaches the best meeting cost "
+              "(an optimal path); first = at the first cell both searches have closed, the path "
+              "through it (paper 002's bidirectional A*, longer than its A*)")
       .include(&BidirOptions::post, smoothing_decls(SmoothingMode::none));
   return d;
 }
@@ -163,7 +179,7 @@ class BidirAStarPlanner final : public Planner {
       PhaseTimer timer(result, "search");
       const BidirOutcome out =
           with_heuristic(o_.search.heuristic, o_.search.setup.diagonal_cost, [&](auto h) {
-            return bidir_search(request.grid, request.start, request.goal, o_.search.setup,
+            return bidir_search(request.grid, request.start, request.goal, o_.search.setup, o_.meet,
                                 request.deadline, h, buffers);
           });
       result.expanded_nodes = out.expanded;

@@ -13,11 +13,15 @@
 // 2. forward key-point search (Algorithm 2's intent): the next key point is the last point still
 //    in sight before the first one that is not;
 // 3. obstacle-avoidance adjustment (eq. 12-13): key points pushed L/2 from adjacent obstacles,
-//    points inserted where a segment passes closer than L to an obstacle centre;
+//    points inserted where a segment passes closer than L to an obstacle centre; none that
+//    turns the path back (kReversalAngle), nor (`avoid_cap: search_path`) one that makes it
+//    longer than the search path;
 // 4. quadratic Bezier corners (eq. 14, `smoothing: bezier`), shrunk where they would hit.
 // expanded_nodes: cells taken off the open list and closed (the goal included).
 
+#include <limits>
 #include <memory>
+#include <vector>
 
 #include "algos/postprocess/path_curves.h"
 #include "algos/postprocess/postprocess_params.h"
@@ -51,7 +55,8 @@ struct ImprovedAStarOptions {
   double turn_weight = 1.2;
   double avoid_offset = 0.5;
   double avoid_near = 1.0;
-  PostprocessOptions post;  // the smoothing (step 4)
+  bool avoid_capped = true;  // avoid_cap: search_path (true) or none
+  PostprocessOptions post;   // the smoothing (step 4)
 };
 
 ParamDecls<ImprovedAStarOptions> internal_decls() {
@@ -77,6 +82,12 @@ ParamDecls<ImprovedAStarOptions> improved_decls() {
       .number("avoid_near", &ImprovedAStarOptions::avoid_near, 1.0, 0.0, 3.0,
               "section 4.2 step 3: a segment passing closer than this to an obstacle centre gets "
               "a point inserted at that obstacle's pushed vertex, cells (L)")
+      .choice("avoid_cap", &ImprovedAStarOptions::avoid_capped, true,
+              ChoiceTable<bool>{{"search_path", true}, {"none", false}},
+              "step 3: search_path = a move or insertion that would make the key polyline "
+              "longer than the search path is refused (Table 5: the external part shortens the "
+              "internal path); none = the adjustment as printed, unbounded (duplicates and "
+              "reversals above 150 degrees are refused either way)")
       .include(&ImprovedAStarOptions::post, smoothing_decls(SmoothingMode::bezier));
   return d;
 }
@@ -97,9 +108,15 @@ class ImprovedAStarPlanner final : public Planner {
     if (external_) {
       PhaseTimer timer(result, "postprocess");
       const SightRule sight = SightRule::cells(o_.search.setup.rule);
+      const double search_length = polyline_length_cells(path.points);
       apply_shortcut(request.grid, ShortcutMode::forward, sight, path);  // steps 1-2
-      // Step 3 (eq. 12-13), paper 002's own: it moves and inserts points.
-      avoid_obstacles(request.grid, path.points, sight, o_.avoid_offset, o_.avoid_near);
+      // Step 3 (eq. 12-13), paper 002's own: it moves and inserts points, a detour around the
+      // obstacles that may lengthen the shortcut polyline but never beyond the search path it
+      // refines (docs/PLANNERS.md "Improved A*").
+      std::vector<Point> keys = path.points;
+      avoid_obstacles(request.grid, keys, sight, o_.avoid_offset, o_.avoid_near,
+                      o_.avoid_capped ? search_length : std::numeric_limits<double>::infinity());
+      path.replace(std::move(keys));
     }
     finish_path(request.grid, o_.post, path, result);  // step 4: Bezier corners
     return result;

@@ -10,8 +10,9 @@
 // - child nodes: `corner_rule: no_corner_cut`;
 // - secondary redundancy removal (section 2.3): greedy from the goal backwards, each node joined
 //   to the earliest node it sees under SightRule::margin(shortcut_margin) (obstacle centres at
-//   least shortcut_margin + 0.5 from the segment; paper: the safety distance is one cell edge):
-//   the pipeline's `from_goal` shortcut;
+//   least shortcut_margin + 0.5 from the segment; paper: the distance to the centre point must
+//   exceed the safety distance, one cell edge, so the default 0.5): the pipeline's `from_goal`
+//   shortcut;
 // - clamped cubic uniform B-spline (section 2.4, appendix A), the remaining nodes as control
 //   points, refitted by re-inserting removed cells where it would hit (`smoothing: bspline`).
 // expanded_nodes: cells taken off the open list and closed (the goal included). Extra metric
@@ -92,8 +93,9 @@ ParamDecls<KinAStarOptions> kin_astar_decls() {
               "free (all 8 elsewhere); eight = always all 8")
       .number("weight_base", &KinAStarOptions::weight_base, 1.5, 0.0, 10.0,
               "the 1.5 of f = g + (1.5 + r/R) h (section 2.2)")
-      // Paper 004: the safety distance is one cell edge.
-      .include(&KinAStarOptions::post, shortcut_margin_decls(1.0))
+      // Paper 004 section 2.3: the distance from the obstacle's centre point must exceed the
+      // safety distance, one cell edge; margin m keeps centres m + 0.5 away, so 0.5.
+      .include(&KinAStarOptions::post, shortcut_margin_decls(0.5))
       .include(&KinAStarOptions::post, smoothing_decls(SmoothingMode::bspline));
   return d;
 }

@@ -307,6 +307,11 @@ class HmaStarPlanner final : public Planner {
       remove_collinear(path);
       remove_turning_points(request.grid, path, sight_);
     }
+    // MA*'s counts describe its own path; the swarm step re-placed and dropped waypoints, so
+    // the counts are those of the path returned (docs/METRICS.md path_nodes).
+    result.waypoints_before_sampling = static_cast<std::int64_t>(result.path.size());
+    for (auto& [name, value] : result.extra)
+      if (name == "key_points") value = static_cast<double>(result.path.size());
     result.extra.emplace_back("pso_windows", windows);
     result.extra.emplace_back("pso_improvements", improvements);
     return result;

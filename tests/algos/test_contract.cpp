@@ -12,7 +12,9 @@
 // - an expired deadline gives limit; one that expires at poll n + 1 of a run that would poll more
 //   gives limit after at most kFurtherPolls more polls (Deadline::after_polls, deterministic);
 // - a start or goal outside the grid or on an obstacle gives invalid_input;
-// - the same seed gives the same result, twice in a row and with a fresh Scratch.
+// - the same seed gives the same result, twice in a row and with a fresh Scratch;
+// - the waypoint count a planner reports is that of the path it returns (or of the polyline
+//   its curve was fitted to).
 
 #include <gtest/gtest.h>
 
@@ -304,6 +306,69 @@ TEST_P(PlannerContract, SameSeedSameResult) {
     expect_same(first, again);
     expect_same(first, fresh_result);
   }
+}
+
+// More small maps of every generator and density, for the counts below.
+const std::vector<MapInstance>& count_maps() {
+  static const std::vector<MapInstance> maps = [] {
+    std::vector<MapInstance> v;
+    for (int i = 0; i < 48; ++i) v.push_back(contract_map(100 + i));
+    return v;
+  }();
+  return maps;
+}
+
+double extra_value(const PlanResult& r, const std::string& name) {
+  for (const auto& [key, value] : r.extra)
+    if (key == name) return value;
+  return -1.0;
+}
+
+TEST_P(PlannerContract, WaypointCountIsThatOfThePathReturned) {
+  // waypoints_before_sampling (the engine's path_nodes and motion time when >= 0) must describe
+  // the path returned: -1 or its point count, unless the path is a sampled curve, where it is
+  // the vertex count of the polyline the curve was fitted to, i.e. of the same planner's path
+  // with `smoothing: none` (the curve is the last step, after every random draw).
+  // A fusion planner's `smoothing` is its DWA objective's, and its path the executed positions.
+  const bool local = info().kind == PlannerKind::local;
+  std::vector<std::string> curves;
+  for (const ParamSpec& spec : info().params)
+    if (spec.name == "smoothing" && !local)
+      for (const std::string& mode : spec.choices)
+        if (mode != "none") curves.push_back(mode);
+  auto with = [&](const char* smoothing) {
+    return configure_planner(info().name, {{"smoothing", smoothing}}, "contract");
+  };
+  int checked = 0;
+  for (std::size_t i = 0; i < count_maps().size(); ++i) {
+    const MapInstance& m = count_maps()[i];
+    const int seed = static_cast<int>(i);
+    SCOPED_TRACE(describe(m, seed));
+    auto plan_with = [&](const Planner& p) {
+      Rng rng(7, static_cast<std::uint64_t>(seed));
+      return plan_checked(p, PlanRequest{m.grid, m.start, m.goal, rng, scratch_});
+    };
+    const PlanResult plain =
+        curves.empty() ? plan_with(planner()) : plan_with(*with("none").planner);
+    if (!plain.ok()) continue;
+    const std::int64_t n = static_cast<std::int64_t>(plain.path.size());
+    EXPECT_TRUE(plain.waypoints_before_sampling == -1 || plain.waypoints_before_sampling == n)
+        << plain.waypoints_before_sampling << " for a path of " << n << " points";
+    // key_points of a path planner counts the same waypoints (a fusion run's are its local goals).
+    if (!local && extra_value(plain, "key_points") >= 0.0) {
+      EXPECT_EQ(extra_value(plain, "key_points"), static_cast<double>(n));
+    }
+    for (const std::string& mode : curves) {
+      const PlanResult curve = plan_with(*with(mode.c_str()).planner);
+      ASSERT_TRUE(curve.ok()) << mode;
+      EXPECT_EQ(curve.waypoints_before_sampling, n) << mode;
+      if (extra_value(curve, "key_points") >= 0.0) {
+        EXPECT_EQ(extra_value(curve, "key_points"), static_cast<double>(n)) << mode;
+      }
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, PlannerContract, testing::ValuesIn(registered()),

@@ -22,7 +22,9 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "algos/local/dwa.h"
@@ -33,6 +35,7 @@
 #include "core/cell_geometry.h"
 #include "core/distance_transform.h"
 #include "core/input_error.h"
+#include "engine/metrics.h"
 #include "engine/run_executor.h"
 #include "engine/trajectory_judge.h"
 #include "generators/map_generators.h"
@@ -272,6 +275,99 @@ TEST(Fusion, JudgedStaticClearanceIsTheExactMinimumOverTheTrajectory) {
   EXPECT_EQ(checked, 12);
 }
 
+std::size_t metric_index(std::string_view name) {
+  for (std::size_t i = 0; i < kRunMetricNames.size(); ++i)
+    if (kRunMetricNames[i] == name) return i;
+  throw std::logic_error("no run metric " + std::string(name));
+}
+
+// Distance from p to the closed square of cell c.
+double square_distance(Point p, Cell c) {
+  const double dx = std::max({c.x - p.x, 0.0, p.x - (c.x + 1.0)});
+  const double dy = std::max({c.y - p.y, 0.0, p.y - (c.y + 1.0)});
+  return std::hypot(dx, dy);
+}
+
+TEST(Fusion, RunMetricsCoverTheUnknownCellsAndTakeTheSimulatedTime) {
+  // The engine's per-run min_clearance and motion_time_s of a fusion run: the clearance counts
+  // every static obstacle the robot met, the unknown cells included (they are not in the grid's
+  // distance transform), and the motion time is the simulated time the run took.
+  const std::size_t clearance = metric_index("min_clearance");
+  const std::size_t clearance_m = metric_index("min_clearance_m");
+  const std::size_t motion = metric_index("motion_time_s");
+  int succeeded = 0, unknown_nearest = 0;
+  for (const char* planner : {"dwa", "fusion_astar_dwa", "fusion_kin_dwa"}) {
+    const ConfiguredPlanner c = configure_planner(planner, {{"unknown_obstacles", 2}}, "t");
+    Scratch scratch;
+    for (int m = 0; m < 16; ++m) {
+      const MapInstance map = random_map(0.1, m, 32);
+      MapReference ref(map.grid, map.start, map.goal);
+      Rng rng(5, m);
+      const RunOutput out = execute_run(*c.planner, ref, rng, scratch, Deadline::never(), {});
+      if (out.outcome != Outcome::success) continue;
+      ++succeeded;
+      std::map<std::string, double> extra(out.result.extra.begin(), out.result.extra.end());
+      const Trajectory& tr = *out.result.trajectory;
+      EXPECT_EQ(out.metrics[motion], extra.at("sim_time_s")) << planner << " map " << m;
+      EXPECT_EQ(out.metrics[motion], tr.t.back()) << planner << " map " << m;
+      EXPECT_DOUBLE_EQ(out.metrics[clearance_m], extra.at("min_clearance_static"));
+      EXPECT_DOUBLE_EQ(out.metrics[clearance], extra.at("min_clearance_static") / tr.cell_edge);
+      // Never above the robot's distance, at any sample, to a grid obstacle or an unknown cell.
+      const DistanceTransform& dt = map.grid.distance_transform();
+      double grid_only = std::numeric_limits<double>::infinity();
+      double unknown = std::numeric_limits<double>::infinity();
+      for (const Point& p : tr.position) {
+        grid_only = std::min(grid_only, dt.clearance(p));
+        for (const Cell& u : tr.unknown_cells) unknown = std::min(unknown, square_distance(p, u));
+      }
+      EXPECT_LE(out.metrics[clearance], grid_only + 1e-12) << planner << " map " << m;
+      EXPECT_LE(out.metrics[clearance], unknown + 1e-12) << planner << " map " << m;
+      unknown_nearest += unknown < grid_only;
+    }
+  }
+  EXPECT_GT(succeeded, 24);
+  // Runs where an unknown cell is what the robot came nearest: the case the grid cannot see.
+  EXPECT_GT(unknown_nearest, 0);
+  std::printf("[measured] %d successful runs, %d nearest to an unknown cell\n", succeeded,
+              unknown_nearest);
+}
+
+TEST(Fusion, LocalGoalsAreTheKeyNodesOrTheCurveSamples) {
+  // fusion_kin_dwa's global planner is kin_astar (no_corner_cut, shortcut_margin raised to the
+  // 0.6 floor). key_nodes (default, paper 004): the local goals are the key points of its path
+  // before the B-spline; curve_samples: those of the sampled B-spline.
+  const nlohmann::json quiet = {{"dynamic_obstacles", 0}, {"unknown_obstacles", 0}};
+  nlohmann::json curve = quiet;
+  curve["local_goals"] = "curve_samples";
+  const ConfiguredPlanner nodes_run = configure_planner("fusion_kin_dwa", quiet, "t");
+  const ConfiguredPlanner curve_run = configure_planner("fusion_kin_dwa", curve, "t");
+  EXPECT_EQ(nodes_run.params.choice("local_goals"), "key_nodes");
+  const nlohmann::json global = {{"corner_rule", "no_corner_cut"}, {"shortcut_margin", 0.6}};
+  nlohmann::json polyline = global;
+  polyline["smoothing"] = "none";
+  const ConfiguredPlanner kin_nodes = configure_planner("kin_astar", polyline, "t");
+  const ConfiguredPlanner kin_curve = configure_planner("kin_astar", global, "t");
+  std::size_t node_goals = 0, curve_goals = 0;
+  for (int m = 0; m < 12; ++m) {
+    const MapInstance map = random_map(0.2, m);
+    Scratch scratch;
+    auto plan = [&](const ConfiguredPlanner& c) {
+      Rng rng(5, m);
+      return c.planner->plan({map.grid, map.start, map.goal, rng, scratch});
+    };
+    const PlanResult a = plan(nodes_run), b = plan(curve_run);
+    ASSERT_TRUE(a.trajectory && b.trajectory) << "map " << m;
+    const PlanResult pa = plan(kin_nodes), pb = plan(kin_curve);
+    ASSERT_TRUE(pa.ok() && pb.ok()) << "map " << m;
+    EXPECT_EQ(a.trajectory->key_points, fusion_key_points(pa.path, 0.1)) << "map " << m;
+    EXPECT_EQ(b.trajectory->key_points, fusion_key_points(pb.path, 0.1)) << "map " << m;
+    node_goals += a.trajectory->key_points.size();
+    curve_goals += b.trajectory->key_points.size();
+  }
+  std::printf("[measured] fusion_kin_dwa local goals over 12 maps: key_nodes %zu, curve %zu\n",
+              node_goals, curve_goals);
+}
+
 TEST(Fusion, SameSeedSameTrajectory) {
   const ConfiguredPlanner c = configure_planner("fusion_kin_dwa", nlohmann::json::object(), "t");
   for (int m = 0; m < 4; ++m) {
@@ -488,6 +584,26 @@ TEST(Judge, FlagsInjectedCollisions) {
   EXPECT_EQ(judge_trajectory(grid, start, goal, teleport).outcome, Outcome::invalid_path);
   Trajectory elsewhere = clean;
   EXPECT_EQ(judge_trajectory(grid, {2, 10}, goal, elsewhere).outcome, Outcome::invalid_path);
+}
+
+TEST(Judge, ClearanceCountsTheUnknownCellsAndMotionTimeIsSimulated) {
+  const Grid grid(20, 20);
+  const Cell start{1, 10}, goal{11, 10};
+  Trajectory tr = straight_run(start, 1.0, 100);  // 10 s along row 10
+  tr.end_reason = "reached";
+  tr.unknown_cells = {{6, 11}};  // 0.5 below the robot's line
+  const TrajectoryVerdict v = judge_trajectory(grid, start, goal, tr);
+  ASSERT_EQ(v.outcome, Outcome::success) << v.message;
+  EXPECT_NEAR(v.min_clearance, 0.5, 1e-12);
+  EXPECT_NEAR(v.sim_time_s, 10.0, 1e-12);
+  // The grid alone sees 1.5 (the left wall), and eq. 5.2e adds 0.1 s per recorded position.
+  PathMetrics m = compute_path_metrics(grid, tr.position);
+  EXPECT_NEAR(m.min_clearance, 1.5, 1e-12);
+  EXPECT_NEAR(m.motion_time_s, 10.0 + 101 * 0.1, 1e-9);
+  apply_trajectory_verdict(v, 2.0, m);
+  EXPECT_NEAR(m.min_clearance, 0.5, 1e-12);
+  EXPECT_NEAR(m.min_clearance_m, 1.0, 1e-12);
+  EXPECT_NEAR(m.motion_time_s, 10.0, 1e-12);
 }
 
 TEST(Judge, MetricsComeFromTheTrajectory) {

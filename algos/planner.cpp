@@ -4,6 +4,8 @@
 #include <ctime>
 #include <string>
 
+#include "core/line_of_sight.h"
+
 namespace agv {
 
 const char* to_string(Failure f) {
@@ -43,7 +45,18 @@ std::int64_t Deadline::polls() const {
   return counter_ != nullptr ? counter_->polls.load(std::memory_order_relaxed) : 0;
 }
 
-PlanResult plan_checked(const Planner& planner, const PlanRequest& request) {
+std::vector<std::pair<const char*, std::int64_t>> work_counter_values(const WorkCounters& w) {
+  const std::array<const std::optional<std::int64_t>*, kWorkCounterNames.size()> values = {
+      &w.search_expansions, &w.samples, &w.ant_steps, &w.pso_evaluations, &w.collision_checks};
+  std::vector<std::pair<const char*, std::int64_t>> out;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (values[i]->has_value()) out.emplace_back(kWorkCounterNames[i], **values[i]);
+  return out;
+}
+
+namespace {
+
+PlanResult plan_checked_query(const Planner& planner, const PlanRequest& request) {
   const Grid& grid = request.grid;
   // Two cell tests on the happy path: this runs inside every run's timed region, so the
   // message is built only for a refusal.
@@ -58,6 +71,17 @@ PlanResult plan_checked(const Planner& planner, const PlanRequest& request) {
     if (grid.blocked(cell)) return refuse(what, cell, "is an obstacle cell");
   }
   return planner.plan(request);
+}
+
+}  // namespace
+
+PlanResult plan_checked(const Planner& planner, const PlanRequest& request) {
+  // Here, not in each planner, so none can forget it; a sub-planner's checks (a fusion planner's
+  // global planner, HMA*'s MA*) fall inside the difference.
+  const std::int64_t checks_before = collision_checks_on_thread();
+  PlanResult result = plan_checked_query(planner, request);
+  result.work.collision_checks = collision_checks_on_thread() - checks_before;
+  return result;
 }
 
 std::int64_t thread_cpu_ns() {

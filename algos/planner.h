@@ -3,9 +3,11 @@
 // query, its RNG, reusable scratch space and a deadline, and returns the common result. Outcomes
 // ("no path", "hit the limit") are data in the result; exceptions are for misuse and bugs.
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -80,6 +82,23 @@ struct Trajectory {
   std::string end_reason;           // the planner's account: reached, timeout, stuck or contact
 };
 
+// Work counters named for what they count (docs/METRICS.md "Work counters"); a planner sets
+// only those its kind defines, and the engine reports only those, so no comparison pairs counts of
+// different things. collision_checks is defined for every planner: plan_checked() sets it.
+struct WorkCounters {
+  std::optional<std::int64_t> search_expansions;  // nodes taken off an open list
+  std::optional<std::int64_t> samples;            // points drawn (sampling planners)
+  std::optional<std::int64_t> ant_steps;          // ACO: moves of all ants
+  std::optional<std::int64_t> pso_evaluations;    // fitness evaluations of a swarm
+  std::optional<std::int64_t> collision_checks;   // segment and point / cell tests
+  bool operator==(const WorkCounters&) const = default;
+};
+// Every counter's metric name, in the order above.
+inline constexpr std::array<const char*, 5> kWorkCounterNames = {
+    "search_expansions", "samples", "ant_steps", "pso_evaluations", "collision_checks"};
+// The defined counters, in that order, under their metric names.
+std::vector<std::pair<const char*, std::int64_t>> work_counter_values(const WorkCounters& w);
+
 struct PlanResult {
   // The outcome: none = a path was found. A result starts as no_path, so a planner that returns
   // without saying it succeeded has not.
@@ -90,8 +109,8 @@ struct PlanResult {
   std::vector<Point> path;
   // Collision rule the path is validated under (the planner's own neighbour rule).
   CornerRule rule = CornerRule::allow;
-  // Nodes taken off the open list, or samples / iterations / ant steps: documented per planner.
-  std::int64_t expanded_nodes = 0;
+  // The work counters the planner defines (docs/METRICS.md "Work counters").
+  WorkCounters work;
   // Waypoints before curve sampling (docs/METRICS.md path_nodes), for planners whose path is a
   // sampled curve; -1 when the path's own points are the waypoints.
   std::int64_t waypoints_before_sampling = -1;
@@ -173,7 +192,8 @@ class Planner {
 
 // The one entry point for callers (engine runs, `agvbench plan` and `scen`, tests): refuses a
 // start or goal outside the grid or on an obstacle with Failure::invalid_input, naming which,
-// and otherwise returns planner.plan(request).
+// and otherwise returns planner.plan(request). Either way it sets result.work.collision_checks to
+// the checks made on this thread during the call (core/line_of_sight.h), sub-planners included.
 PlanResult plan_checked(const Planner& planner, const PlanRequest& request);
 
 }  // namespace agv

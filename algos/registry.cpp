@@ -204,11 +204,13 @@ nlohmann::json registry_json() {
   for (const auto& info : planner_registry()) {
     nlohmann::json p = nlohmann::json::array();
     for (const auto& s : info.params) p.push_back(s.to_json());
+    nlohmann::json counters = nlohmann::json::object();
+    for (const auto& [name, meaning] : info.counters) counters[name] = meaning;
     out.push_back({{"name", info.name},
                    {"kind", to_string(info.kind)},
                    {"summary", info.summary},
                    {"source", info.source},
-                   {"expanded_nodes", info.expanded_nodes_meaning},
+                   {"counters", counters},
                    {"stochastic", info.stochastic},
                    {"proves_no_path", info.proves_no_path},
                    {"params", p}});

@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "algos/planner.h"
@@ -24,10 +25,12 @@ const char* to_string(PlannerKind kind);
 struct PlannerInfo {
   std::string name;  // stable public name, e.g. "astar"
   PlannerKind kind = PlannerKind::grid_search;
-  std::string summary;                 // one line for `agvbench list`
-  std::string source;                  // where it comes from, e.g. "paper 000 section 4.1"
-  std::string expanded_nodes_meaning;  // what expanded_nodes counts for this planner
-  bool stochastic = false;             // draws from the run's RNG
+  std::string summary;  // one line for `agvbench list`
+  std::string source;   // where it comes from, e.g. "paper 000 section 4.1"
+  // The work counters it reports (docs/METRICS.md "Work counters"), each with what it counts
+  // for this planner; collision_checks is every planner's.
+  std::vector<std::pair<std::string, std::string>> counters;
+  bool stochastic = false;  // draws from the run's RNG
   // Whether the planner proves that there is no path: where the goal cannot be reached it
   // answers no_path (and the engine checks every no_path claim: missed_path). A planner that
   // searches within a budget of samples, iterations or simulated time cannot tell "none" from

@@ -153,6 +153,7 @@ SightHit sight_internal::reference_walk(const Grid& grid, const Walk& w, const S
 }
 
 SightHit check_segment(const Grid& grid, Point a, Point b, const SightRule& rule) {
+  count_collision_checks(1);
   sight_internal::Walk w;
   if (!sight_internal::canonical_walk(grid, a, b, w)) return {SightHit::Kind::outside, {}};
   return sight_internal::reference_walk(grid, w, rule);

@@ -28,6 +28,7 @@
 // judged as exact hits. Clearance compares squared distances with the same tolerance in favour
 // of "free" (distance == radius is free).
 
+#include <cstdint>
 #include <span>
 
 #include "core/corner_rule.h"
@@ -83,5 +84,16 @@ inline bool segment_free_reference(const Grid& grid, Point a, Point b, const Sig
 // Every consecutive segment free; a single point is checked as the segment p-p; an empty
 // polyline is free.
 bool polyline_free(const Grid& grid, std::span<const Point> points, const SightRule& rule = {});
+
+// The collision_checks work counter (docs/METRICS.md "Work counters"): a running total per
+// thread. Every test above adds one per segment or point it judges (check_segment, segment_free
+// and each element of the batched forms), so no caller can forget to count; a planner adds its
+// own cell-occupancy tests with count_collision_checks(). plan_checked() reports the difference
+// over one plan call. Thread-local: a worker's count is its own plan's alone.
+namespace sight_detail {
+inline constinit thread_local std::int64_t collision_checks = 0;
+}
+inline void count_collision_checks(std::int64_t n) { sight_detail::collision_checks += n; }
+inline std::int64_t collision_checks_on_thread() { return sight_detail::collision_checks; }
 
 }  // namespace agv

@@ -370,11 +370,13 @@ void batch_free(const Grid& grid, const Point* a, const Point* b, int count, con
 }  // namespace
 
 bool segment_free(const Grid& grid, Point a, Point b, const SightRule& rule) {
+  count_collision_checks(1);
   return free_fast(grid, a, b, rule);
 }
 
 void segments_free(const Grid& grid, std::span<const Point> a, std::span<const Point> b,
                    const SightRule& rule, std::span<std::uint8_t> out) {
+  count_collision_checks(static_cast<std::int64_t>(out.size()));
   for (std::size_t i = 0; i < out.size(); i += sight_internal::kLanes) {
     const int count =
         static_cast<int>(std::min<std::size_t>(sight_internal::kLanes, out.size() - i));
@@ -384,6 +386,7 @@ void segments_free(const Grid& grid, std::span<const Point> a, std::span<const P
 
 void segments_free_from(const Grid& grid, Point from, std::span<const Point> to,
                         const SightRule& rule, std::span<std::uint8_t> out) {
+  count_collision_checks(static_cast<std::int64_t>(out.size()));
   Point froms[sight_internal::kLanes];
   std::fill(std::begin(froms), std::end(froms), from);
   for (std::size_t i = 0; i < out.size(); i += sight_internal::kLanes) {
@@ -395,6 +398,7 @@ void segments_free_from(const Grid& grid, Point from, std::span<const Point> to,
 
 void points_free(const Grid& grid, std::span<const Point> points, const SightRule& rule,
                  std::span<std::uint8_t> out) {
+  count_collision_checks(static_cast<std::int64_t>(out.size()));
   for (std::size_t i = 0; i < out.size(); i += sight_internal::kLanes) {
     const int count =
         static_cast<int>(std::min<std::size_t>(sight_internal::kLanes, out.size() - i));

@@ -37,9 +37,10 @@ int command_list(bool as_json) {
   }
   std::cout << "planners:\n\n";
   for (const auto& info : planner_registry()) {
-    std::cout << info.name << "  -  " << info.summary << "\n    source: " << info.source
-              << "\n    expanded_nodes: " << info.expanded_nodes_meaning
-              << (info.stochastic ? "\n    stochastic: draws from the run's RNG" : "") << "\n";
+    std::cout << info.name << "  -  " << info.summary << "\n    source: " << info.source;
+    for (const auto& [name, meaning] : info.counters)
+      std::cout << "\n    " << name << ": " << meaning;
+    std::cout << (info.stochastic ? "\n    stochastic: draws from the run's RNG" : "") << "\n";
     print_params(info.params);
     std::cout << "\n";
   }

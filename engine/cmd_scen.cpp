@@ -45,7 +45,7 @@ int command_scen(const ScenCommand& cmd) {
 
   Scratch scratch;
   Rng rng(1, stable_hash(cmd.planner));
-  std::int64_t mismatches = 0, failures = 0, expansions = 0;
+  std::int64_t mismatches = 0, failures = 0, expansions = 0, checks = 0;
   double max_abs = 0.0, max_rel = 0.0;
   std::vector<double> times_ns;
   nlohmann::json bad = nlohmann::json::array();
@@ -55,7 +55,8 @@ int command_scen(const ScenCommand& cmd) {
     const std::int64_t t0 = thread_cpu_ns();
     const PlanResult r = plan_checked(*planner.planner, req);
     times_ns.push_back(static_cast<double>(thread_cpu_ns() - t0));
-    expansions += r.expanded_nodes;
+    expansions += r.work.search_expansions.value_or(0);
+    checks += r.work.collision_checks.value_or(0);
     if (!r.ok()) {
       ++failures;
       ++mismatches;
@@ -92,7 +93,8 @@ int command_scen(const ScenCommand& cmd) {
       {"max_abs_error", max_abs},
       {"max_rel_error", max_rel},
       {"tolerance", cmd.tolerance},
-      {"expanded_nodes", expansions},
+      {"search_expansions", expansions},
+      {"collision_checks", checks},
       {"first_mismatches", bad},
       {"timing", {{"total_s", total_ns / 1e9}, {"median_query_us", median_ns / 1e3}}}};
   if (cmd.json) {

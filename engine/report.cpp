@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -44,9 +45,10 @@ json paired_json(const PairedComparison& c) {
           {"wilcoxon_p", number_or_null(c.wilcoxon.p)}};
 }
 
-// The metrics a paired comparison reports (costs: smaller is better).
-constexpr std::array<std::string_view, 6> kPairedMetrics = {
-    "path_length", "path_nodes", "turns", "turn_angle_rad", "expanded_nodes", "motion_time_s"};
+// The metrics a paired comparison reports (costs: smaller is better); and the work counters
+// (kWorkCounterNames), each only between planners that both define it.
+constexpr std::array<std::string_view, 5> kPairedMetrics = {"path_length", "path_nodes", "turns",
+                                                            "turn_angle_rad", "motion_time_s"};
 constexpr double kTieTolerance = 1e-9;
 
 std::size_t metric_index(std::string_view name) {
@@ -134,6 +136,46 @@ void paired_values(const SweepResults& r, const SweepCell& cell, std::size_t a, 
   }
 }
 
+// A work counter (or other extra metric) of one run; NaN when the run does not report it.
+double extra_value(const RunSlot& s, std::string_view name) {
+  for (const auto& [n, value] : s.extra)
+    if (n == name) return value;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// Whether the planner reports this counter on some run of the cell (docs/METRICS.md "Work
+// counters": a planner defines the counters of its kind on every run it returns from).
+bool defines_counter(const SweepResults& r, const SweepCell& cell, std::size_t planner,
+                     std::string_view name) {
+  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
+    const RunSlot& s =
+        r.run(static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m, planner);
+    if (s.done && std::isfinite(extra_value(s, name))) return true;
+  }
+  return false;
+}
+
+// paired_values() for a work counter.
+void paired_counter_values(const SweepResults& r, const SweepCell& cell, std::size_t a,
+                           std::size_t b, std::string_view name, std::vector<double>& va,
+                           std::vector<double>& vb) {
+  va.clear();
+  vb.clear();
+  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
+    const std::int64_t task = static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m;
+    const RunSlot& sa = r.run(task, a);
+    const RunSlot& sb = r.run(task, b);
+    if (!sa.done || !sb.done || sa.outcome != Outcome::success || sb.outcome != Outcome::success)
+      continue;
+    const double x = extra_value(sa, name);
+    const double y = extra_value(sb, name);
+    if (std::isfinite(x) && std::isfinite(y)) {
+      va.push_back(x);
+      vb.push_back(y);
+    }
+  }
+}
+
 json paired_cell_json(const SweepConfig& config, const SweepResults& r, const SweepCell& cell) {
   std::size_t base = 0;
   for (std::size_t p = 0; p < r.labels.size(); ++p)
@@ -146,6 +188,11 @@ json paired_cell_json(const SweepConfig& config, const SweepResults& r, const Sw
     for (auto name : kPairedMetrics) {
       paired_values(r, cell, p, base, metric_index(name), va, vb);
       metrics[std::string(name)] = paired_json(compare_paired(va, vb, kTieTolerance));
+    }
+    for (const char* name : kWorkCounterNames) {
+      if (!defines_counter(r, cell, p, name) || !defines_counter(r, cell, base, name)) continue;
+      paired_counter_values(r, cell, p, base, name, va, vb);
+      metrics[name] = paired_json(compare_paired(va, vb, kTieTolerance));
     }
     paired_values(r, cell, p, base, kRunMetricNames.size(), va, vb);
     out.push_back(
@@ -263,13 +310,12 @@ std::string summary_table(const SweepConfig& config, const SweepResults& r) {
   std::ostringstream out;
   char line[256];
   std::snprintf(line, sizeof line, "%-24s %8s %8s %10s %12s %8s %12s %10s\n", "planner", "runs",
-                "success", "len/base", "[95% CI]", "turns", "expanded", "median_us");
+                "success", "len/base", "[95% CI]", "turns", "checks", "median_us");
   out << line;
-  const std::size_t il = metric_index("path_length"), it = metric_index("turns"),
-                    ie = metric_index("expanded_nodes");
+  const std::size_t il = metric_index("path_length"), it = metric_index("turns");
   for (std::size_t p = 0; p < r.labels.size(); ++p) {
     std::int64_t runs = 0, ok = 0;
-    std::vector<double> turns, expanded, times, a, b;
+    std::vector<double> turns, checks, times, a, b;
     for (std::int64_t task = 0; task < r.plan.map_tasks(); ++task) {
       const RunSlot& s = r.run(task, p);
       if (!s.done) continue;
@@ -278,7 +324,7 @@ std::string summary_table(const SweepConfig& config, const SweepResults& r) {
       if (s.outcome != Outcome::success) continue;
       ++ok;
       turns.push_back(s.metrics[it]);
-      expanded.push_back(s.metrics[ie]);
+      checks.push_back(extra_value(s, "collision_checks"));
       const RunSlot& sb = r.run(task, base);
       if (sb.done && sb.outcome == Outcome::success) {
         a.push_back(s.metrics[il]);
@@ -292,7 +338,7 @@ std::string summary_table(const SweepConfig& config, const SweepResults& r) {
                   r.labels[p].c_str(), static_cast<long long>(runs),
                   runs ? 100.0 * static_cast<double>(ok) / static_cast<double>(runs) : 0.0,
                   c.geo_mean_ratio, p == base ? "(baseline)" : ci, summarize(turns).mean,
-                  summarize(expanded).mean, summarize(times).median);
+                  summarize(checks).mean, summarize(times).median);
     out << line;
   }
   return out.str();

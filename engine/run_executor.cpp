@@ -73,7 +73,12 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
   }
   out.plan_time_ns = thread_cpu_ns() - t0;
   const PlanResult& r = out.result;
-  out.metrics[kExpandedNodesMetric] = static_cast<double>(r.expanded_nodes);
+  // Before the planner's own extras, for every outcome the planner returned from: the work was
+  // done whether or not the path is good.
+  std::vector<std::pair<std::string, double>> counted;
+  for (const auto& [name, value] : work_counter_values(r.work))
+    counted.emplace_back(name, static_cast<double>(value));
+  out.result.extra.insert(out.result.extra.begin(), counted.begin(), counted.end());
 
   // A simulated robot run (fusion planners) is judged from its executed trajectory by
   // engine/trajectory_judge.h, never by the grid validator and its corner rule.

@@ -3,9 +3,9 @@
 // under no_corner_cut) at densities 0.1 and 0.3, plus the RRT nearest-neighbour index alone.
 //
 // One iteration plans every map of the case once; each plan gets a fresh Rng seeded from the map
-// index, so every iteration does the same work. Counters: plans_per_s, expanded_per_s (samples,
-// tree nodes or ant steps per second, as each planner's expanded_nodes counts them),
-// expanded_per_plan and success (fraction of plans that found a path).
+// index, so every iteration does the same work. Counters: plans_per_s, work_per_s (its kind's
+// work counter per second: samples for PRM, RRT and RRT-Connect, ant_steps for ACO; docs/METRICS.md
+// "Work counters"), work_per_plan and success (fraction of plans that found a path).
 
 #include <benchmark/benchmark.h>
 
@@ -41,7 +41,7 @@ Case uniform_case(int side, double density) {
 
 void run_case(benchmark::State& state, const Case& c, const Planner& planner) {
   Scratch scratch;
-  std::int64_t expanded = 0;
+  std::int64_t work = 0;
   std::int64_t plans = 0;
   std::int64_t successes = 0;
   for (auto _ : state) {
@@ -49,7 +49,7 @@ void run_case(benchmark::State& state, const Case& c, const Planner& planner) {
       const MapInstance& m = c.maps[i];
       Rng rng(7, i);
       const PlanResult r = planner.plan(PlanRequest{m.grid, m.start, m.goal, rng, scratch});
-      expanded += r.expanded_nodes;
+      work += r.work.samples.value_or(0) + r.work.ant_steps.value_or(0);
       successes += r.ok() ? 1 : 0;
       ++plans;
       benchmark::DoNotOptimize(r.path.data());
@@ -57,9 +57,8 @@ void run_case(benchmark::State& state, const Case& c, const Planner& planner) {
   }
   using benchmark::Counter;
   state.counters["plans_per_s"] = Counter(static_cast<double>(plans), Counter::kIsRate);
-  state.counters["expanded_per_s"] = Counter(static_cast<double>(expanded), Counter::kIsRate);
-  state.counters["expanded_per_plan"] =
-      Counter(static_cast<double>(expanded) / static_cast<double>(plans));
+  state.counters["work_per_s"] = Counter(static_cast<double>(work), Counter::kIsRate);
+  state.counters["work_per_plan"] = Counter(static_cast<double>(work) / static_cast<double>(plans));
   state.counters["success"] = Counter(static_cast<double>(successes) / static_cast<double>(plans));
 }
 

@@ -2,7 +2,7 @@
 // parameters through the planner interface, and each shared post-processing step on its own, on
 // uniform random maps (corner to corner, solvable under no_corner_cut, the strictest rule any of
 // them uses). One iteration plans (or post-processes) the case's maps once; expansions_per_s is
-// the planners' expanded_nodes (cells taken off the open list) per CPU second, plans_per_s the
+// the planners' search_expansions (cells taken off the open list) per CPU second, plans_per_s the
 // plan calls per CPU second.
 
 #include <benchmark/benchmark.h>
@@ -58,7 +58,7 @@ void run_planner(benchmark::State& state, const Case& c, const Planner& planner)
     for (const MapInstance& m : c.maps) {
       const PlanResult r = planner.plan(PlanRequest{m.grid, m.start, m.goal, rng, scratch});
       if (!r.ok()) state.SkipWithError("plan failed");
-      expanded += r.expanded_nodes;
+      expanded += r.work.search_expansions.value_or(0);
       ++plans;
       benchmark::DoNotOptimize(r.path.data());
     }

@@ -59,7 +59,7 @@ void run_case(benchmark::State& state, const Case& c, const Planner& planner) {
     for (const Query& q : c.queries) {
       const PlanResult r = planner.plan(PlanRequest{c.grid, q.start, q.goal, rng, scratch});
       if (!r.ok()) state.SkipWithError("search failed");
-      expanded += r.expanded_nodes;
+      expanded += r.work.search_expansions.value_or(0);
       benchmark::DoNotOptimize(r.path.data());
     }
   }

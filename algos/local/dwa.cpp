@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/line_of_sight.h"
+
 namespace agv {
 
 namespace {
@@ -178,6 +180,9 @@ void roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, cons
   s.px.setConstant(pose.x);
   s.py.setConstant(pose.y);
 
+  // collision_checks (docs/METRICS.md "Work counters"): one per rollout point, whatever number
+  // of obstacles it is measured against.
+  count_collision_checks(static_cast<std::int64_t>(n) * steps);
   const std::uint8_t* occ = view.known.occupancy();
   const int stride = view.known.stride(), width = view.known.width(), height = view.known.height();
   const double dyn_cap = std::max(p.dynamic_clearance_cap, p.robot_radius + p.safety_margin);

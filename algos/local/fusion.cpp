@@ -13,6 +13,7 @@
 #include "algos/local/dwa.h"
 #include "algos/local/dwa_world.h"
 #include "algos/local/fusion_drive.h"
+#include "core/line_of_sight.h"
 
 namespace agv {
 
@@ -301,12 +302,15 @@ class FusionPlanner final : public Planner {
     PlanResult result;
     const Grid& grid = req.grid;
 
-    // 1. The world, from the map's reference path.
+    // 1. The world, from the map's reference path. Building it is the simulator's work, not the
+    // planner's: its collision checks are taken back off this thread's count.
     std::int64_t t0 = thread_cpu_ns();
+    const std::int64_t world_checks = collision_checks_on_thread();
     std::vector<Point> reference;
     if (PlanResult ref = reference_->plan(req); ref.ok()) reference = std::move(ref.path);
     Rng wrng = world_rng(grid, req.start, req.goal, s_.world_seed);
     DwaWorld world = DwaWorld::generate(grid, req.start, req.goal, reference, s_.world, wrng);
+    count_collision_checks(world_checks - collision_checks_on_thread());
     result.phases.push_back({"world", thread_cpu_ns() - t0});
 
     // 2. The global path and its key points (pure DWA: start and goal).
@@ -317,13 +321,13 @@ class FusionPlanner final : public Planner {
       t0 = thread_cpu_ns();
       PlanResult g = global_->plan(req);
       result.phases.push_back({"global", thread_cpu_ns() - t0});
-      result.expanded_nodes = g.expanded_nodes;
+      result.work.search_expansions = g.work.search_expansions;
       result.rule = g.rule;
       if (!g.ok()) {
         PlanResult f =
             PlanResult::failed(g.failure, "global planner " + s_.global_name + ": " + g.message);
         f.rule = g.rule;
-        f.expanded_nodes = g.expanded_nodes;
+        f.work = result.work;
         f.phases = std::move(result.phases);
         return f;
       }
@@ -342,14 +346,15 @@ class FusionPlanner final : public Planner {
     t0 = thread_cpu_ns();
     DriveResult run = drive(options, req, world, std::move(keys), global_.get());
     const std::int64_t loop_ns = thread_cpu_ns() - t0;
-    result.expanded_nodes += run.expanded_nodes;
+    if (global_)
+      result.work.search_expansions = result.work.search_expansions.value_or(0) + run.expansions;
     result.phases.push_back({"dwa", loop_ns});
     // Mean CPU time of one control step: timing, reported under `timing.phases`.
     result.phases.push_back({"cpu_ns_per_step", run.steps > 0 ? loop_ns / run.steps : 0});
     if (run.deadline_hit) {
       PlanResult f = PlanResult::failed(Failure::limit, "time limit during the control loop");
       f.rule = result.rule;
-      f.expanded_nodes = result.expanded_nodes;
+      f.work = result.work;
       f.phases = std::move(result.phases);
       return f;
     }
@@ -378,9 +383,12 @@ PlannerInfo make_info(const std::vector<std::string>& grid_planners) {
   info.name = variant.name;
   info.summary = variant.summary;
   info.source = variant.source;
-  info.expanded_nodes_meaning = variant.global_default != nullptr
-                                    ? "the global planner's expanded nodes (replans included)"
-                                    : "0 (no global search)";
+  if (variant.global_default != nullptr)
+    info.counters.emplace_back("search_expansions",
+                               "the global planner's search expansions (replans included)");
+  info.counters.emplace_back("collision_checks",
+                             "one per rollout point the DWA tests, plus the global planner's "
+                             "(replans included); the world's set-up is not counted");
   info.stochastic = false;  // the world is drawn from the map, not from the run's stream
   info.params = fusion_decls(variant, grid_planners).specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {

@@ -204,7 +204,7 @@ class Drive {
     if (!fs_.replan_grid.in_bounds(here) || fs_.replan_grid.blocked(here)) return;
     const PlanRequest sub{fs_.replan_grid, here, req_.goal, req_.rng, req_.scratch, req_.deadline};
     const PlanResult g = global_->plan(sub);
-    out_.expanded_nodes += g.expanded_nodes;
+    out_.expansions += g.work.search_expansions.value_or(0);
     if (!g.ok()) return;
     keys_ = fusion_key_points(g.path, o_.key_point_tolerance);
     if (keys_.size() < 2) keys_.push_back(goal_);

@@ -59,8 +59,8 @@ struct DriveResult {
   std::shared_ptr<Trajectory> trajectory;  // end_reason set
   long long steps = 0;                     // control steps
   int replans = 0;
-  std::int64_t expanded_nodes = 0;  // the global planner's, over the replans
-  bool deadline_hit = false;        // stopped by the run's wall-clock deadline
+  std::int64_t expansions = 0;  // the global planner's search_expansions, over the replans
+  bool deadline_hit = false;    // stopped by the run's wall-clock deadline
 };
 
 // Drives from request.start's centre through `keys` (keys[0] = the start) to request.goal.

@@ -26,7 +26,7 @@ class BirrtPlanner final : public Planner {
     if (request.start == request.goal) {
       result.failure = Failure::none;
       result.path = {centre(request.start)};
-      result.expanded_nodes = 1;
+      result.work.samples = 0;
       return result;
     }
     auto& scratch = request.scratch.get<BirrtScratch>();
@@ -69,7 +69,8 @@ class BirrtPlanner final : public Planner {
         std::swap(a, b);
       }
     }
-    result.expanded_nodes = scratch.from_start.size() + scratch.from_goal.size();
+    // The iteration where the trees met drew its target before the loop stopped.
+    result.work.samples = iterations + (meet_a >= 0 ? 1 : 0);
     result.extra.emplace_back("iterations", static_cast<double>(iterations));
     if (meet_a < 0) {
       result.failure = Failure::limit;
@@ -103,7 +104,9 @@ PlannerInfo birrt_planner() {
   info.source =
       "docs/PLANNERS.md Baselines; paper 000 Tables III-XIII (Bi-RRT column); Kuffner & LaValle "
       "2000";
-  info.expanded_nodes_meaning = "nodes of both trees at the end of the plan (both roots included)";
+  info.counters = {
+      {"samples", "targets drawn, one per iteration (goal-biased ones included)"},
+      {"collision_checks", "segments tested: one per extension step of either tree that moves"}};
   info.stochastic = true;
   info.proves_no_path = false;  // gives up with limit after its budget
   static const ParamDecls<RrtSettings> decls = rrt_decls();

@@ -13,6 +13,7 @@
 #include "algos/sampling/point_cloud.h"
 #include "algos/sampling/sampling_params.h"
 #include "core/cell_geometry.h"
+#include "core/line_of_sight.h"
 
 namespace agv {
 
@@ -77,7 +78,7 @@ class PrmPlanner final : public Planner {
     if (request.start == request.goal) {
       result.failure = Failure::none;
       result.path = {centre(request.start)};
-      result.expanded_nodes = 1;
+      result.work.samples = 0;
       return result;
     }
     PrmScratch& s = request.scratch.get<PrmScratch>();
@@ -86,7 +87,6 @@ class PrmPlanner final : public Planner {
       PhaseTimer timer(result, "roadmap");
       built = build_roadmap(request, s, result);
     }
-    result.expanded_nodes = static_cast<std::int64_t>(s.points.size());
     if (!built) {
       result.failure = Failure::limit;
       result.message = "deadline passed while building the roadmap";
@@ -122,13 +122,21 @@ class PrmPlanner final : public Planner {
     const double height = grid.height();
     const long long max_draws = samples_ * kMaxDrawsPerSample;
     long long accepted = 0;
-    for (long long draw = 0; draw < max_draws && accepted < samples_; ++draw) {
-      if (draw % kSamplingDeadlineInterval == 0 && request.deadline.expired()) return false;
+    long long draw = 0;
+    for (; draw < max_draws && accepted < samples_; ++draw) {
+      if (draw % kSamplingDeadlineInterval == 0 && request.deadline.expired()) {
+        result.work.samples = draw;
+        count_collision_checks(draw);
+        return false;
+      }
       const Point p{request.rng.uniform(0.0, width), request.rng.uniform(0.0, height)};
       if (grid.blocked(static_cast<int>(p.x), static_cast<int>(p.y))) continue;
       s.points.push_back(p);
       ++accepted;
     }
+    // Every draw, kept or rejected, is a point drawn and one cell test.
+    result.work.samples = draw;
+    count_collision_checks(draw);
 
     const std::size_t n = s.points.size();
     const PointCloud cloud{&s.points};
@@ -225,8 +233,9 @@ PlannerInfo prm_planner() {
   info.name = "prm";
   info.summary = "PRM: uniform free samples, k-nearest roadmap, Dijkstra on the roadmap";
   info.source = "docs/PLANNERS.md Baselines; paper 000 Tables III-XIII (PRM column); Kavraki 1996";
-  info.expanded_nodes_meaning =
-      "roadmap nodes: samples drawn in free space plus the start and goal centres";
+  info.counters = {
+      {"samples", "points drawn uniformly over the map, those rejected in obstacle cells included"},
+      {"collision_checks", "one cell test per point drawn, one segment test per candidate edge"}};
   info.stochastic = true;
   info.proves_no_path = false;  // gives up with limit after its budget
   info.params = prm_decls().specs();

@@ -45,7 +45,7 @@ class RrtPlanner final : public Planner {
     if (request.start == request.goal) {
       result.failure = Failure::none;
       result.path = {start};
-      result.expanded_nodes = 1;
+      result.work.samples = 0;
       return result;
     }
     RrtTree& tree = request.scratch.get<RrtScratch>().tree;
@@ -83,7 +83,8 @@ class RrtPlanner final : public Planner {
         }
       }
     }
-    result.expanded_nodes = tree.size();
+    // The iteration that reached the goal drew its target before the loop stopped.
+    result.work.samples = iterations + (reached >= 0 ? 1 : 0);
     result.extra.emplace_back("iterations", static_cast<double>(iterations));
     if (reached < 0) {
       result.failure = Failure::limit;
@@ -109,7 +110,11 @@ PlannerInfo rrt_planner() {
   info.name = "rrt";
   info.summary = "RRT: one tree from the start, fixed-step extension, goal bias";
   info.source = "docs/PLANNERS.md Baselines; paper 000 Tables III-XIII (RRT column); LaValle 1998";
-  info.expanded_nodes_meaning = "tree nodes at the end of the plan (root and goal included)";
+  info.counters = {
+      {"samples", "targets drawn, one per iteration (goal-biased ones included)"},
+      {"collision_checks",
+       "segments tested: one per extension that moves (a target on a tree node needs none), "
+       "one per goal connection tried"}};
   info.stochastic = true;
   info.proves_no_path = false;  // gives up with limit after its budget
   info.params = rrt_options_decls().specs();

@@ -14,7 +14,7 @@
 // - smoothing (section 2.4): collinear nodes dropped, then for each turning point the direct
 //   connection, else the midpoint shortcut S-C-G (Figure 5), each kept only when free under
 //   `shortcut_margin` (0 = SightRule::cells): the pipeline's `direct_midpoint` shortcut.
-// expanded_nodes: cells taken off the open list and closed (the goal included).
+// Work counters: grid_search_counters() (docs/METRICS.md "Work counters").
 
 #include <algorithm>
 #include <cmath>
@@ -118,7 +118,7 @@ PlannerInfo alt_astar_planner() {
       "paper 003 alternative A*: heuristic weighted by the inverse obstacle rate, "
       "no_corner_cut, direct and midpoint shortcuts";
   info.source = "paper 003 section 2 (eq. 3-6, sections 2.3-2.4); docs/PLANNERS.md Alternative A*";
-  info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
+  info.counters = grid_search_counters();
   info.params = alt_astar_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return std::make_unique<AltAStarPlanner>(alt_astar_decls().read(params));

@@ -50,8 +50,7 @@ PlannerInfo astar_planner() {
   info.name = "astar";
   info.summary = "classic A*: 8-connected, f = g + h, closed set";
   info.source = "docs/PLANNERS.md A* (classic); the traditional A* baseline of papers 000-004";
-  info.expanded_nodes_meaning =
-      "cells taken off the open list and closed (goal included; stale duplicates not counted)";
+  info.counters = grid_search_counters();
   info.params = astar_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return std::make_unique<AStarPlanner>(astar_decls().read(params));

@@ -23,7 +23,8 @@
 // Moves are symmetric under every corner rule (a diagonal's two side cells are the same both
 // ways), so the backward search expands with the same move table.
 //
-// expanded_nodes: cells taken off either open list and closed (each at most once per direction).
+// search_expansions: cells taken off either open list and closed (each at most once per
+// direction); collision_checks: 8 neighbour-cell tests per expansion (docs/METRICS.md).
 
 #include <algorithm>
 #include <cmath>
@@ -182,7 +183,9 @@ class BidirAStarPlanner final : public Planner {
             return bidir_search(request.grid, request.start, request.goal, o_.search.setup, o_.meet,
                                 request.deadline, h, buffers);
           });
-      result.expanded_nodes = out.expanded;
+      result.work.search_expansions = out.expanded;
+      // Every cell taken off a list is expanded (the meeting test is on relaxations).
+      count_collision_checks(kCellTestsPerExpansion * out.expanded);
       if (out.failure == Failure::none) {
         trace_meeting(request.grid, buffers, out.meet, buffers.cells);
         result.path = cell_centres(buffers.cells);
@@ -210,8 +213,10 @@ PlannerInfo bidir_astar_planner() {
       "bidirectional A*: forward and backward searches alternate, stop when either "
       "list's min f reaches the best meeting cost; optimal";
   info.source = "paper 002 baseline; docs/PLANNERS.md Dijkstra, bidirectional A*";
-  info.expanded_nodes_meaning =
-      "cells taken off either open list and closed (forward and backward counted separately)";
+  info.counters = {
+      {"search_expansions",
+       "cells taken off either open list and closed (forward and backward counted separately)"},
+      {"collision_checks", "8 neighbour-cell tests per expanded cell"}};
   info.params = bidir_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return std::make_unique<BidirAStarPlanner>(bidir_decls().read(params));

@@ -46,8 +46,7 @@ PlannerInfo dijkstra_planner() {
   info.name = "dijkstra";
   info.summary = "Dijkstra: A* with the zero heuristic, 8-connected, optimal";
   info.source = "docs/PLANNERS.md Dijkstra; paper 002 baseline";
-  info.expanded_nodes_meaning =
-      "cells taken off the open list and closed (goal included; stale duplicates not counted)";
+  info.counters = grid_search_counters();
   info.params = dijkstra_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return std::make_unique<DijkstraPlanner>(dijkstra_decls().read(params));

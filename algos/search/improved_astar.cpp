@@ -17,7 +17,7 @@
 //    turns the path back (kReversalAngle), nor (`avoid_cap: search_path`) one that makes it
 //    longer than the search path;
 // 4. quadratic Bezier corners (eq. 14, `smoothing: bezier`), shrunk where they would hit.
-// expanded_nodes: cells taken off the open list and closed (the goal included).
+// Work counters: grid_search_counters() (docs/METRICS.md "Work counters").
 
 #include <limits>
 #include <memory>
@@ -136,7 +136,7 @@ PlannerInfo improved_astar_internal_planner() {
       "paper 002 internal improved A*: no_squeeze, octile (D_diag 1.4), turning "
       "weight 1.2";
   info.source = "paper 002 section 4.1 (Algorithm 1, eq. 6-10), Table 4; docs/PLANNERS.md";
-  info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
+  info.counters = grid_search_counters();
   info.params = improved_internal_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return std::make_unique<ImprovedAStarPlanner>(improved_internal_decls().read(params), false);
@@ -151,7 +151,7 @@ PlannerInfo improved_astar_planner() {
       "paper 002 improved A*: the internal search, then midpoints, forward key "
       "points, obstacle-avoidance adjustment and quadratic Bezier corners";
   info.source = "paper 002 sections 4.1-4.2 (Algorithms 1-2, eq. 6-14), Table 5; docs/PLANNERS.md";
-  info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
+  info.counters = grid_search_counters();
   info.params = improved_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return std::make_unique<ImprovedAStarPlanner>(improved_decls().read(params), true);

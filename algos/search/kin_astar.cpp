@@ -15,7 +15,7 @@
 //   shortcut;
 // - clamped cubic uniform B-spline (section 2.4, appendix A), the remaining nodes as control
 //   points, refitted by re-inserting removed cells where it would hit (`smoothing: bspline`).
-// expanded_nodes: cells taken off the open list and closed (the goal included). Extra metric
+// Work counters: grid_search_counters() (docs/METRICS.md "Work counters"). Extra metric
 // generated_nodes: cells put on the open list (the paper's "searched child nodes"), counted by
 // the search listener.
 
@@ -151,7 +151,7 @@ PlannerInfo kin_astar_planner() {
       "weighted heuristic (1.5 + r/R), redundancy removal with a safety distance, "
       "clamped cubic B-spline";
   info.source = "paper 004 section 2 (eq. 1, Table 1, appendix A); docs/PLANNERS.md";
-  info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included)";
+  info.counters = grid_search_counters();
   info.params = kin_astar_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return std::make_unique<KinAStarPlanner>(kin_astar_decls().read(params));

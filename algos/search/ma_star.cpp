@@ -11,7 +11,7 @@
 //   point can be removed.
 // Steps 2-3 are the pipeline's `turning_points` shortcut (algos/postprocess/postprocess_params.h)
 // under SightRule::circles(r_obs), then the optional `smoothing`.
-// expanded_nodes: cells taken off the open list and closed (the goal included).
+// Work counters: grid_search_counters() (docs/METRICS.md "Work counters").
 
 #include <cmath>
 #include <memory>
@@ -91,7 +91,7 @@ PlannerInfo ma_star_planner() {
       "MA*: f = B + C with B as printed (Euclidean from the start), collinear and "
       "turning-point removal around inflated obstacles";
   info.source = "paper 000 section 4.1, steps 2-3 (eq. 4.1a-b, 5.1a-b); docs/PLANNERS.md MA*";
-  info.expanded_nodes_meaning = "cells taken off the open list and closed (goal included), as A*";
+  info.counters = grid_search_counters();
   info.params = ma_star_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {
     return make_ma_star(ma_star_decls().read(params));

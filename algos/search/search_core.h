@@ -59,18 +59,34 @@
 #include <cstdlib>
 #include <limits>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "algos/planner.h"
 #include "algos/search/open_list.h"
 #include "core/corner_rule.h"
 #include "core/grid.h"
+#include "core/line_of_sight.h"
 
 namespace agv {
 
 inline constexpr int kNoDirection = 8;
 // Deadline poll period in expansions (docs/ARCHITECTURE.md "Style" item 7); a power of two.
 inline constexpr std::int64_t kDeadlineInterval = 1024;
+
+// collision_checks of a grid search (docs/METRICS.md "Work counters"): an expansion reads the
+// occupancy of all 8 neighbours (the free-neighbour byte), whatever moves it then relaxes.
+inline constexpr std::int64_t kCellTestsPerExpansion = 8;
+
+// PlannerInfo::counters of the planners that are a grid search (plus post-processing).
+inline std::vector<std::pair<std::string, std::string>> grid_search_counters() {
+  return {
+      {"search_expansions", "cells taken off the open list and closed, each once (goal included)"},
+      {"collision_checks",
+       "8 neighbour-cell tests per expanded cell (the goal is not expanded), plus the "
+       "segments and points its post-processing tests"}};
+}
 
 struct GridSearchSetup {
   CornerRule rule = CornerRule::allow;
@@ -311,8 +327,8 @@ std::vector<Point> cell_centres(const std::vector<Cell>& cells);
 std::optional<PlanResult> check_grid_query(const PlanRequest& request, CornerRule rule);
 
 // The whole plan call of a planner that is just a search: checks the query, runs grid_search()
-// under a PhaseTimer "search", returns the cell-centre path and the expansion count. `listener`
-// sees the search (grid_search()); it is not called when the query is invalid.
+// under a PhaseTimer "search", returns the cell-centre path and the search_expansions counter.
+// `listener` sees the search (grid_search()); it is not called when the query is invalid.
 template <class Policy, class Listener = NullListener>
 PlanResult plan_grid_search(const PlanRequest& request, const GridSearchSetup& setup,
                             const Policy& policy, Listener&& listener = Listener{}) {
@@ -324,7 +340,10 @@ PlanResult plan_grid_search(const PlanRequest& request, const GridSearchSetup& s
     auto& buffers = request.scratch.get<GridSearchBuffers>();
     const GridSearchOutcome out = grid_search(request.grid, request.start, request.goal, setup,
                                               request.deadline, policy, buffers, listener);
-    result.expanded_nodes = out.expanded;
+    result.work.search_expansions = out.expanded;
+    // The goal is taken off the list but not expanded: its neighbours are never read.
+    count_collision_checks(kCellTestsPerExpansion *
+                           (out.expanded - (out.failure == Failure::none ? 1 : 0)));
     if (out.failure == Failure::none) {
       std::vector<Cell> cells;
       trace_cells(buffers, request.grid, request.goal, cells);

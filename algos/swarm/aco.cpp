@@ -26,6 +26,7 @@
 #include "algos/search/grid_search_params.h"
 #include "algos/search/heuristics.h"
 #include "core/corner_rule.h"
+#include "core/line_of_sight.h"
 
 namespace agv {
 
@@ -118,6 +119,8 @@ class Colony {
 
   bool found() const { return best_length_ < kInfinity; }
   std::int64_t steps() const { return steps_; }
+  // Neighbour-cell occupancy tests: 8 at every position an ant chooses its next move from.
+  std::int64_t cell_tests() const { return cell_tests_; }
   long long successful() const { return successful_; }
   long long iterations_done() const { return iterations_done_; }
 
@@ -160,6 +163,7 @@ class Colony {
       for (int d = 0; d < 8; ++d)
         if (occupancy[at + offset_[d]] == 0)
           free_mask = static_cast<std::uint8_t>(free_mask | 1U << d);
+      cell_tests_ += 8;
       const std::uint8_t allowed = moves[free_mask];
       int next = -1;
       int next_dir = -1;
@@ -247,6 +251,7 @@ class Colony {
   double fresh_stored_;  // `stored` of a cell first seen now (initial pheromone / scale history)
   double best_length_ = kInfinity;
   std::int64_t steps_ = 0;
+  std::int64_t cell_tests_ = 0;
   long long successful_ = 0;
   long long iterations_done_ = 0;
 };
@@ -288,6 +293,7 @@ class AcoPlanner final : public Planner {
     if (request.start == request.goal) {
       result.failure = Failure::none;
       result.path = {centre(request.start)};
+      result.work.ant_steps = 0;
       return result;
     }
     AcoScratch& s = request.scratch.get<AcoScratch>();
@@ -297,7 +303,8 @@ class AcoPlanner final : public Planner {
       PhaseTimer timer(result, "search");
       completed = colony.run();
     }
-    result.expanded_nodes = colony.steps();
+    result.work.ant_steps = colony.steps();
+    count_collision_checks(colony.cell_tests());
     result.extra.emplace_back("successful_ants", static_cast<double>(colony.successful()));
     result.extra.emplace_back("iterations", static_cast<double>(colony.iterations_done()));
     // A deadline that stops the colony is a limit even with a path in hand: the path of an
@@ -327,7 +334,9 @@ PlannerInfo aco_planner() {
   info.name = "aco";
   info.summary = "ant colony (Ant System) on the 8-connected grid, paper 002 Table 2 defaults";
   info.source = "docs/PLANNERS.md Baselines; paper 002 section 5, Table 2; Dorigo et al. 1996";
-  info.expanded_nodes_meaning = "ant steps: moves made by all ants of all iterations";
+  info.counters = {
+      {"ant_steps", "moves made by all ants of all iterations"},
+      {"collision_checks", "8 neighbour-cell tests at every position an ant moves on from"}};
   info.stochastic = true;
   info.proves_no_path = false;  // gives up with limit after its budget
   info.params = aco_decls().specs();

@@ -30,7 +30,8 @@
 // (swarm x 2) segment checks go through the batched line of sight (core/line_of_sight_batch.h).
 // Random draws, all from the run's Rng in a fixed order: per window 2 x swarm positions and
 // 2 x swarm velocities, then per iteration rho (stochastic only) and 4 x swarm for r1, r2.
-// expanded_nodes: MA*'s expansions (cells closed by the search).
+// Work counters: search_expansions are MA*'s; pso_evaluations the particle positions whose cost
+// was computed; collision_checks MA*'s and every segment the swarm and the removals test.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -165,6 +166,9 @@ class WindowSwarm {
     return {gbest_(0), gbest_(1)};
   }
 
+  // Fitness evaluations so far: particle positions whose cost was computed (eq. 5.1g).
+  std::int64_t evaluations() const { return evaluations_; }
+
  private:
   void fill_uniform(Swarm& m, Eigen::Index n) {
     m.resize(n, 2);
@@ -193,6 +197,7 @@ class WindowSwarm {
         s_.points.push_back({pos(i, 0), pos(i, 1)});
         s_.index.push_back(i);
       }
+    evaluations_ += static_cast<std::int64_t>(s_.points.size());
     s_.free.resize(s_.points.size());
     segments_free_from(grid_, a_, s_.points, sight_, s_.free);
     std::size_t kept = 0;
@@ -230,6 +235,7 @@ class WindowSwarm {
   Point a_, b_;
   Row2 lo_, hi_, gbest_;
   double gbest_cost_ = kInf;
+  std::int64_t evaluations_ = 0;
 };
 
 const ChoiceTable<Inertia>& inertia_names() {
@@ -284,16 +290,23 @@ class HmaStarPlanner final : public Planner {
 
   PlanResult plan(const PlanRequest& request) const override {
     PlanResult result = ma_star_->plan(request);  // phases "search" and "postprocess"
+    result.work.pso_evaluations = 0;
     if (!result.ok()) return result;
     int windows = 0;
     int improvements = 0;
+    std::int64_t evaluations = 0;
     {
       PhaseTimer timer(result, "pso");
       HmaScratch& scratch = request.scratch.get<HmaScratch>();
       std::vector<Point>& path = result.path;
       WindowSwarm swarm(request.grid, sight_, pso_, request.rng, scratch);
       for (std::size_t n = 0; n + 2 < path.size(); ++n) {
-        if (request.deadline.expired()) return PlanResult::failed(Failure::limit, "time limit");
+        if (request.deadline.expired()) {
+          PlanResult f = PlanResult::failed(Failure::limit, "time limit");
+          f.work = result.work;
+          f.work.pso_evaluations = swarm.evaluations();
+          return f;
+        }
         const double current =
             point_distance(path[n], path[n + 1]) + point_distance(path[n + 1], path[n + 2]);
         double best = kInf;
@@ -306,12 +319,14 @@ class HmaStarPlanner final : public Planner {
       }
       remove_collinear(path);
       remove_turning_points(request.grid, path, sight_);
+      evaluations = swarm.evaluations();
     }
     // MA*'s counts describe its own path; the swarm step re-placed and dropped waypoints, so
     // the counts are those of the path returned (docs/METRICS.md path_nodes).
     result.waypoints_before_sampling = static_cast<std::int64_t>(result.path.size());
     for (auto& [name, value] : result.extra)
       if (name == "key_points") value = static_cast<double>(result.path.size());
+    result.work.pso_evaluations = evaluations;
     result.extra.emplace_back("pso_windows", windows);
     result.extra.emplace_back("pso_improvements", improvements);
     return result;
@@ -356,7 +371,12 @@ PlannerInfo hma_star_planner() {
       "HMA*: MA* key nodes, then a sliding-window PSO with stochastic inertia weight "
       "and opposition-based learning re-placing each middle node";
   info.source = "paper 000 section 5 (eq. 4.2a, 5.1c-5.1g, pseudo-code); docs/PLANNERS.md HMA*";
-  info.expanded_nodes_meaning = "MA*'s search expansions (cells closed, goal included)";
+  info.counters = {
+      {"search_expansions", "MA*'s search expansions (cells closed, goal included)"},
+      {"pso_evaluations", "particle positions whose cost (eq. 5.1g) was computed, all windows"},
+      {"collision_checks",
+       "MA*'s (8 neighbour-cell tests per expansion, its turning-point removal's segments) and "
+       "every segment the swarm and the final removals test"}};
   info.stochastic = true;
   info.params = hma_star_decls().specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {

@@ -202,6 +202,86 @@ TEST_P(PlannerContract, StartEqualsGoalGivesTheStart) {
   }
 }
 
+// The counter its kind must define (docs/METRICS.md "Work counters"); nullptr: none beyond
+// collision_checks.
+const char* kind_counter(const PlannerInfo& info) {
+  switch (info.kind) {
+    case PlannerKind::grid_search:
+      return "search_expansions";
+    case PlannerKind::sampling:
+      return "samples";
+    case PlannerKind::swarm:
+      return info.name == "aco" ? "ant_steps" : "pso_evaluations";
+    case PlannerKind::local:
+      return nullptr;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> declared_counters(const PlannerInfo& info) {
+  std::vector<std::string> v;
+  for (const auto& [name, meaning] : info.counters) {
+    EXPECT_FALSE(meaning.empty()) << name;
+    v.push_back(name);
+  }
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+std::vector<std::string> reported_counters(const PlanResult& r) {
+  std::vector<std::string> v;
+  for (const auto& [name, value] : work_counter_values(r.work)) {
+    EXPECT_GE(value, 0) << name;
+    v.push_back(name);
+  }
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+// Every planner reports exactly the counters its registry entry declares, on every run it returns
+// from (start == goal included): collision_checks always, positive on every non-trivial query
+// (the start's neighbourhood, a first segment or a rollout is always checked), its kind's counter,
+// and each declared counter positive on some map. The engine reports them under their names.
+TEST_P(PlannerContract, ReportsTheWorkCountersItDeclares) {
+  const std::vector<std::string> declared = declared_counters(info());
+  ASSERT_TRUE(std::binary_search(declared.begin(), declared.end(), "collision_checks"));
+  if (const char* own = kind_counter(info())) {
+    EXPECT_TRUE(std::binary_search(declared.begin(), declared.end(), std::string(own))) << own;
+  }
+  std::vector<std::int64_t> most(kWorkCounterNames.size(), 0);
+  for (std::size_t i = 0; i < small_maps().size(); ++i) {
+    const MapInstance& m = small_maps()[i];
+    SCOPED_TRACE(describe(m, static_cast<int>(i)));
+    const PlanResult r = planned(m, static_cast<int>(i), m.start, m.goal, scratch_);
+    EXPECT_EQ(reported_counters(r), declared);
+    ASSERT_TRUE(r.work.collision_checks.has_value());
+    EXPECT_GT(*r.work.collision_checks, 0);
+    for (std::size_t c = 0; c < kWorkCounterNames.size(); ++c)
+      for (const auto& [name, value] : work_counter_values(r.work))
+        if (name == std::string(kWorkCounterNames[c])) most[c] = std::max(most[c], value);
+    const PlanResult trivial = planned(m, static_cast<int>(i), m.start, m.start, scratch_);
+    EXPECT_EQ(reported_counters(trivial), declared);
+    // The engine: the same counts, as run metrics under the counters' names.
+    const RunOutput out = judged(m, static_cast<int>(i));
+    for (const auto& [name, value] : work_counter_values(out.result.work)) {
+      const auto it = std::find_if(out.result.extra.begin(), out.result.extra.end(),
+                                   [&](const auto& e) { return e.first == name; });
+      ASSERT_NE(it, out.result.extra.end()) << name;
+      EXPECT_EQ(it->second, static_cast<double>(value)) << name;
+    }
+    for (const char* name : kWorkCounterNames) {
+      const bool is_declared = std::binary_search(declared.begin(), declared.end(), name);
+      const auto n = std::count_if(out.result.extra.begin(), out.result.extra.end(),
+                                   [&](const auto& e) { return e.first == name; });
+      EXPECT_EQ(n, is_declared ? 1 : 0) << name;
+    }
+  }
+  for (std::size_t c = 0; c < kWorkCounterNames.size(); ++c)
+    if (std::binary_search(declared.begin(), declared.end(), kWorkCounterNames[c])) {
+      EXPECT_GT(most[c], 0) << kWorkCounterNames[c];
+    }
+}
+
 TEST_P(PlannerContract, WalledOffGoalGivesItsDocumentedFailure) {
   const Failure expected = info().proves_no_path ? Failure::no_path : Failure::limit;
   for (std::size_t i = 0; i < small_maps().size(); i += 3) {
@@ -284,7 +364,7 @@ void expect_same(const PlanResult& a, const PlanResult& b) {
   EXPECT_EQ(a.message, b.message);
   EXPECT_EQ(a.path, b.path);
   EXPECT_EQ(a.rule, b.rule);
-  EXPECT_EQ(a.expanded_nodes, b.expanded_nodes);
+  EXPECT_EQ(a.work, b.work);
   EXPECT_EQ(a.waypoints_before_sampling, b.waypoints_before_sampling);
   EXPECT_EQ(a.extra, b.extra);
   ASSERT_EQ(a.trajectory == nullptr, b.trajectory == nullptr);

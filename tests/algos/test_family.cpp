@@ -299,7 +299,7 @@ TEST_P(FamilyPaths, ValidateUnderOwnRuleAndSmoothedAreCollisionFree) {
       ++failures;
       ADD_FAILURE() << c.name << " map " << i << ": a sample lies inside an obstacle";
     }
-    EXPECT_GT(r.expanded_nodes, 0);
+    EXPECT_GT(r.work.search_expansions.value_or(-1), 0);
     // Deterministic: the same query again gives the same path.
     if (i % 50 == 0) {
       EXPECT_EQ(run(planner, m, scratch).path, r.path) << c.name << " map " << i;
@@ -526,11 +526,12 @@ TEST(PaperProperties, KinFiveDirectionsExpandFewerThanEight) {
     const PlanResult a = run(five, m, scratch);
     const PlanResult b = run(eight, m, scratch);
     ASSERT_TRUE(a.ok() && b.ok());
-    expanded.add(static_cast<double>(a.expanded_nodes), static_cast<double>(b.expanded_nodes));
+    expanded.add(static_cast<double>(a.work.search_expansions.value_or(-1)),
+                 static_cast<double>(b.work.search_expansions.value_or(-1)));
     children.add(generated(a), generated(b));
     ASSERT_GT(generated(a), 0.0);
-    total_five += a.expanded_nodes;
-    total_eight += b.expanded_nodes;
+    total_five += a.work.search_expansions.value_or(-1);
+    total_eight += b.work.search_expansions.value_or(-1);
   }
   expanded.print("paper 004: kin_astar five vs eight directions, expanded nodes");
   children.print("paper 004: kin_astar five vs eight directions, generated (searched) children");
@@ -554,7 +555,8 @@ TEST(PaperProperties, AltInverseRateExpandsNoMoreOnLowDensity) {
     const PlanResult a = run(inverse, m, scratch);
     const PlanResult b = run(admissible, m, scratch);
     ASSERT_TRUE(a.ok() && b.ok());
-    expanded.add(static_cast<double>(a.expanded_nodes), static_cast<double>(b.expanded_nodes));
+    expanded.add(static_cast<double>(a.work.search_expansions.value_or(-1)),
+                 static_cast<double>(b.work.search_expansions.value_or(-1)));
     path_len.add(length(a.path), length(b.path));
   }
   expanded.print("paper 003: alt_astar inverse_rate vs admissible (low density), expanded");
@@ -576,10 +578,11 @@ TEST(PaperProperties, MaStarPrintedGExpandsFewerThanAStar) {
     const PlanResult c = run(ma_path, m, scratch);
     ASSERT_TRUE(a.ok() && b.ok() && c.ok());
     // g_mode path is A*: the same search, node for node.
-    EXPECT_EQ(c.expanded_nodes, a.expanded_nodes);
+    EXPECT_EQ(c.work.search_expansions.value_or(-1), a.work.search_expansions.value_or(-1));
     // The removals never lengthen A*'s path.
     EXPECT_LE(length(c.path), length(a.path) + 1e-9);
-    expanded.add(static_cast<double>(b.expanded_nodes), static_cast<double>(a.expanded_nodes));
+    expanded.add(static_cast<double>(b.work.search_expansions.value_or(-1)),
+                 static_cast<double>(a.work.search_expansions.value_or(-1)));
     path_len.add(length(b.path), length(a.path));
   }
   expanded.print("paper 000: ma_star vs astar, expanded nodes");
@@ -609,14 +612,14 @@ TEST(PaperProperties, BidirectionalAStarIsOptimal) {
       return c;
     };
     EXPECT_NEAR(cost(b.path), cost(d.path), 1e-9) << "map " << i << " rule " << rule;
-    bidir_expanded += b.expanded_nodes;
-    dijkstra_expanded += d.expanded_nodes;
+    bidir_expanded += b.work.search_expansions.value_or(-1);
+    dijkstra_expanded += d.work.search_expansions.value_or(-1);
     ++checked;
   }
   EXPECT_EQ(checked, 1000);
   // No fixed total: expansion counts depend on floating-point tie-breaks, which differ between
   // the Release and sanitizer builds. That the shared expansion changed no search is shown by
-  // the reports (expanded_nodes per run), equal before and after (scripts/report_set.sh).
+  // the reports (search_expansions per run), equal before and after (scripts/report_set.sh).
   EXPECT_LT(bidir_expanded, dijkstra_expanded);
   std::printf("[measured] expanded over 1000 maps: bidir_astar %lld, dijkstra %lld\n",
               static_cast<long long>(bidir_expanded), static_cast<long long>(dijkstra_expanded));

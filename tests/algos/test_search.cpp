@@ -202,7 +202,7 @@ TEST_P(CornerRules, AStarMatchesDijkstraOnRandomMaps) {
       ASSERT_EQ(path_problem(grid, r.path, q.start, q.goal, rule), "")
           << p->info->name << " map " << k;
       ASSERT_EQ(r.rule, rule);
-      ASSERT_GE(r.expanded_nodes, 1);
+      ASSERT_GE(r.work.search_expansions.value_or(-1), 1);
     }
   }
 }
@@ -245,7 +245,8 @@ TEST(Unsolvable, WallGivesNoPath) {
     EXPECT_FALSE(r.ok()) << name;
     EXPECT_EQ(r.failure, Failure::no_path) << name;
     EXPECT_TRUE(r.path.empty()) << name;
-    EXPECT_EQ(r.expanded_nodes, 20 * 30) << name;  // the whole reachable side, once each
+    EXPECT_EQ(r.work.search_expansions.value_or(-1), 20 * 30)
+        << name;  // the whole reachable side, once each
   }
   EXPECT_FALSE(shortest_length(grid, {2, 3}, {35, 20}, CornerRule::allow, scratch).has_value());
 }
@@ -299,11 +300,12 @@ TEST(ScratchReuse, RepeatsAndSizeChanges) {
     for (const PlanResult* r : {&a, &b, &d}) {
       EXPECT_EQ(r->ok(), a.ok()) << name;
       EXPECT_EQ(r->path, a.path) << name;
-      EXPECT_EQ(r->expanded_nodes, a.expanded_nodes) << name;
+      EXPECT_EQ(r->work.search_expansions.value_or(-1), a.work.search_expansions.value_or(-1))
+          << name;
     }
     EXPECT_EQ(c.ok(), e.ok()) << name;
     EXPECT_EQ(c.path, e.path) << name;
-    EXPECT_EQ(c.expanded_nodes, e.expanded_nodes) << name;
+    EXPECT_EQ(c.work.search_expansions.value_or(-1), e.work.search_expansions.value_or(-1)) << name;
     const auto ref_small =
         shortest_length(small, s_start, s_goal, CornerRule::no_corner_cut, scratch);
     const auto ref_large =
@@ -342,7 +344,7 @@ TEST(ScratchReuse, StampWrapAround) {
     const PlanResult y = run(astar, g, start, goal, fresh);
     ASSERT_EQ(x.failure, y.failure) << k;
     ASSERT_EQ(x.path, y.path) << k;
-    ASSERT_EQ(x.expanded_nodes, y.expanded_nodes) << k;
+    ASSERT_EQ(x.work.search_expansions.value_or(-1), y.work.search_expansions.value_or(-1)) << k;
   }
 }
 
@@ -353,7 +355,7 @@ TEST(StartIsGoal, SingleWaypoint) {
   ASSERT_TRUE(r.ok());
   ASSERT_EQ(r.path.size(), 1U);
   EXPECT_EQ(r.path[0], (Point{2.5, 2.5}));
-  EXPECT_EQ(r.expanded_nodes, 1);
+  EXPECT_EQ(r.work.search_expansions.value_or(-1), 1);
 }
 
 // --- policy hooks used by the later variants ------------------------------------------------

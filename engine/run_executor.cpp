@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "algos/search/dijkstra.h"
+#include "core/any_angle.h"
 #include "engine/trajectory_judge.h"
 #include "engine/validator.h"
 
@@ -45,6 +46,15 @@ std::optional<double> MapReference::optimal_length(CornerRule rule, Scratch& scr
     known_[r] = true;
   }
   return optimal_[r];
+}
+
+std::optional<double> MapReference::any_angle_length(Scratch& scratch) {
+  if (!any_angle_known_) {
+    any_angle_ = agv::any_angle_length(grid_, start_, goal_, model_.corner_rule,
+                                       scratch.get<AnyAngleScratch>());
+    any_angle_known_ = true;
+  }
+  return any_angle_;
 }
 
 RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scratch& scratch,
@@ -140,6 +150,13 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
     out.metrics[kOptimalityMetric] = m.path_length / *opt;
   } else if (opt && *opt == 0.0) {
     out.metrics[kOptimalityMetric] = 1.0;
+  }
+  // The lower bound no valid path beats (docs/METRICS.md "Any-angle reference"): >= 1 for every
+  // planner, the distance to the best any robot on this grid could do.
+  if (auto bound = map.any_angle_length(scratch); bound && *bound > 0.0) {
+    out.metrics[kAnyAngleMetric] = m.path_length / *bound;
+  } else if (bound && *bound == 0.0) {
+    out.metrics[kAnyAngleMetric] = 1.0;
   }
   return out;
 }

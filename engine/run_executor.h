@@ -43,11 +43,12 @@ std::optional<Outcome> outcome_from_string(std::string_view name);
 // The work counters a planner defines (algos/planner.h WorkCounters) are not among them: they
 // travel under their own names with the planner's extra metrics (RunOutput::result.extra), so
 // only planners that define one report it (docs/METRICS.md "Work counters").
-inline constexpr std::array<std::string_view, kPathMetricCount + 1> kRunMetricNames = {
-    "path_length",     "path_length_m",   "path_nodes",      "turns",
-    "turn_angle_rad",  "smoothness_mean", "smoothness_max",  "min_clearance",
-    "min_clearance_m", "motion_time_s",   "optimality_ratio"};
+inline constexpr std::array<std::string_view, kPathMetricCount + 2> kRunMetricNames = {
+    "path_length",     "path_length_m",   "path_nodes",       "turns",
+    "turn_angle_rad",  "smoothness_mean", "smoothness_max",   "min_clearance",
+    "min_clearance_m", "motion_time_s",   "optimality_ratio", "any_angle_ratio"};
 inline constexpr std::size_t kOptimalityMetric = kPathMetricCount;
+inline constexpr std::size_t kAnyAngleMetric = kPathMetricCount + 1;
 using RunMetrics = std::array<double, kRunMetricNames.size()>;
 
 // What the engine knows about a map, shared by every planner run on it.
@@ -63,6 +64,9 @@ class MapReference {
   // Optimal 8-connected length under `rule` (Dijkstra), computed once per rule; nullopt when
   // start and goal do not connect under it.
   std::optional<double> optimal_length(CornerRule rule, Scratch& scratch);
+  // The any-angle optimum under the model's rule (core/any_angle.h), computed once: a lower
+  // bound of every path valid under the model (its clearance only removes paths).
+  std::optional<double> any_angle_length(Scratch& scratch);
 
  private:
   const Grid& grid_;
@@ -71,6 +75,8 @@ class MapReference {
   CollisionModel model_;
   std::array<bool, 3> known_{};
   std::array<std::optional<double>, 3> optimal_{};
+  bool any_angle_known_ = false;
+  std::optional<double> any_angle_;
 };
 
 struct RunOutput {

@@ -92,7 +92,8 @@ TEST(Heuristics, ValuesAndNames) {
 
 TEST(GridSearchParams, DefaultsAndValidation) {
   const auto astar = make("astar", nlohmann::json::object());
-  EXPECT_EQ(astar.params.choice("corner_rule"), "allow");
+  // The default collision model's rule (core/collision_model.h), whatever the paper's A* used.
+  EXPECT_EQ(astar.params.choice("corner_rule"), "no_corner_cut");
   EXPECT_EQ(astar.params.choice("heuristic"), "euclidean");
   EXPECT_DOUBLE_EQ(astar.params.number("diagonal_cost"), kSqrt2);
   const auto dijkstra = make("dijkstra", {{"corner_rule", "no_corner_cut"}});

@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "engine/map_task.h"
 #include "engine/sweep_config.h"
+#include "tests/engine/for_each_run.h"
 #include "engine/validator.h"
 
 namespace agv {
@@ -122,18 +123,6 @@ TEST(CollisionModel, LooserPlannerIsALabelledVariant) {
   EXPECT_NE(
       config_error(small_sweep({{"clearance", 0.3}}, {"astar", thin})).find("params.clearance"),
       std::string::npos);
-}
-
-// Runs every map task of the sweep and hands each run to `check`.
-template <class Check>
-void for_each_run(const SweepConfig& config, Check&& check) {
-  const MapTaskContext context(config);
-  MapTaskWorkspace workspace;
-  workspace.planners = configure_planners(config);
-  std::vector<std::size_t> all(config.planners.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  for (std::int64_t task = 0; task < context.plan.map_tasks(); ++task)
-    run_map_task(context, task, all, workspace, [&](const MapTaskRun& run) { check(run); });
 }
 
 TEST(CollisionModel, EveryPathIsJudgedUnderTheModel) {

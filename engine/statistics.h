@@ -67,8 +67,8 @@ Interval wilson_interval(std::int64_t successes, std::int64_t n, double confiden
 //   rank_tie_tolerance * (its magnitude) of the previous one joins its tie group (0 = exact);
 // - n <= kWilcoxonExactMaxN: the exact null distribution of V GIVEN those mid-ranks, each sign
 //   +-1 with probability 1/2, enumerated by dynamic programming over doubled ranks (integers),
-//   ties and dropped zeros included; p = P(|V - n(n+1)/4| >= |v - n(n+1)/4|), which is R's
-//   2 min(P(V <= v), P(V >= v)) capped at 1 (the distribution is symmetric);
+//   also with ties and after zeros were dropped; p = P(|V - n(n+1)/4| >= |v - n(n+1)/4|), which is
+//   R's 2 min(P(V <= v), P(V >= v)) capped at 1 (the distribution is symmetric);
 // - above: the normal approximation with tie correction
 //   sigma^2 = n(n+1)(2n+1)/24 - sum(t^3 - t)/48 and continuity correction 0.5.
 // n = 0: v 0, p NaN. Precondition: no NaN.

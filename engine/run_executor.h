@@ -40,10 +40,9 @@ std::optional<Outcome> outcome_from_string(std::string_view name);
 // The per-run scalar metrics, in report order; NaN where a metric does not apply.
 // The path metrics of engine/metrics.h first (metric_values order), then the engine's own.
 inline constexpr std::array<std::string_view, kPathMetricCount + 2> kRunMetricNames = {
-    "path_length",    "path_length_m",   "waypoints",      "turns",
-    "turn_angle_rad", "max_turn_rad",    "smoothness_mean", "smoothness_max",
-    "min_clearance",  "min_clearance_m", "motion_time_s",   "expanded_nodes",
-    "optimality_ratio"};
+    "path_length",   "path_length_m",   "waypoints",       "turns",         "turn_angle_rad",
+    "max_turn_rad",  "smoothness_mean", "smoothness_max",  "min_clearance", "min_clearance_m",
+    "motion_time_s", "expanded_nodes",  "optimality_ratio"};
 inline constexpr std::size_t kExpandedNodesMetric = kPathMetricCount;
 inline constexpr std::size_t kOptimalityMetric = kPathMetricCount + 1;
 using RunMetrics = std::array<double, kRunMetricNames.size()>;

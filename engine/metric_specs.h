@@ -27,7 +27,7 @@ inline constexpr Better kLarger = Better::larger;
 inline constexpr RatioKind kPlain = RatioKind::plain;
 inline constexpr RatioKind kShifted = RatioKind::shifted;
 
-// In the order paired comparisons are written.
+// In the order paired comparisons are computed (a report lists them by name).
 inline constexpr std::array kMetricSpecs = {
     // Path metrics (engine/metrics.h).
     MetricSpec{"path_length", kSmaller, kPlain},

@@ -31,28 +31,84 @@ struct TurnSummary {
   double max = 0.0;
 };
 
-// docs/METRICS.md "turns": same-sign vertices less than kTurnMergeLength apart form one turn.
-TurnSummary merged_turns(std::span<const Vertex> vertices) {
-  TurnSummary t;
-  double sum = 0.0;
-  double sign = 0.0;  // of the open merged turn; 0 when none is open
-  double last_at = 0.0;
-  const auto close = [&] {
-    if (sign != 0.0 && sum > kTurnThreshold) ++t.count;
-    t.max = std::max(t.max, sum);
-  };
-  for (const Vertex& v : vertices) {
-    if (std::abs(v.turn) <= kStraightTolerance) continue;
-    const double s = v.turn > 0.0 ? 1.0 : -1.0;
-    if (s != sign || v.at - last_at >= kTurnMergeLength) {
-      close();
-      sign = s;
-      sum = 0.0;
-    }
-    sum += std::abs(v.turn);
-    last_at = v.at;
+// A turning vertex with its share of the curvature density (docs/METRICS.md "turns").
+struct Bend {
+  double turn;     // |turn|
+  double at;       // arc position
+  double lo, hi;   // its spread
+  double density;  // turn / (hi - lo), rad per cell
+  int sign;
+};
+
+std::vector<Bend> bends_of(std::span<const Vertex> vertices, double length) {
+  std::vector<Bend> bends;
+  for (const Vertex& v : vertices)
+    if (std::abs(v.turn) > kStraightTolerance)
+      bends.push_back({std::abs(v.turn), v.at, 0.0, 0.0, 0.0, v.turn > 0.0 ? 1 : -1});
+  for (std::size_t i = 0; i < bends.size(); ++i) {
+    Bend& b = bends[i];
+    // Half way to the neighbouring turning vertex, so a collinear joint changes nothing.
+    const double before = i > 0 ? (b.at - bends[i - 1].at) / 2.0 : b.at;
+    const double after = i + 1 < bends.size() ? (bends[i + 1].at - b.at) / 2.0 : length - b.at;
+    b.lo = b.at - std::min(kTurnSpread, before);
+    b.hi = b.at + std::min(kTurnSpread, after);
+    b.density = b.turn / std::max(b.hi - b.lo, 1e-12);
   }
-  close();
+  return bends;
+}
+
+// One lobe, bends[first .. last], cut into ceil(extent / kTurnMaxExtent) pieces of equal arc.
+void close_lobe(std::span<const Bend> bends, std::size_t first, std::size_t last, TurnSummary& t) {
+  const double from = bends[first].at;
+  const double extent = bends[last].at - from;
+  const int pieces = std::max(1, static_cast<int>(std::ceil(extent / kTurnMaxExtent - 1e-12)));
+  std::vector<double> sums(static_cast<std::size_t>(pieces), 0.0);
+  for (std::size_t i = first; i <= last; ++i) {
+    const int k = extent > 0.0 ? static_cast<int>((bends[i].at - from) / extent * pieces) : 0;
+    sums[static_cast<std::size_t>(std::min(k, pieces - 1))] += bends[i].turn;
+  }
+  for (const double sum : sums) {
+    if (sum > kTurnThreshold) ++t.count;
+    t.max = std::max(t.max, sum);
+  }
+}
+
+// docs/METRICS.md "turns": runs of one sign whose spreads touch, cut at density valleys below
+// kTurnValleyRatio of the peak on either side, each lobe capped at kTurnMaxExtent of arc.
+TurnSummary merged_turns(std::span<const Vertex> vertices, double length) {
+  TurnSummary t;
+  const std::vector<Bend> bends = bends_of(vertices, length);
+  if (bends.empty()) return t;
+  std::size_t first = 0;
+  double peak = bends[0].density;  // the open lobe's highest density since its last valley
+  double valley = std::numeric_limits<double>::infinity();  // the lowest density after the peak
+  std::size_t valley_at = 0;
+  for (std::size_t i = 1; i < bends.size(); ++i) {
+    const Bend& b = bends[i];
+    if (b.sign != bends[i - 1].sign || b.lo > bends[i - 1].hi) {
+      close_lobe(bends, first, i - 1, t);
+      first = i;
+      peak = b.density;
+      valley = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    if (b.density > peak && valley > kTurnValleyRatio * peak) {
+      peak = b.density;  // a shallow dip: still the same lobe
+      valley = std::numeric_limits<double>::infinity();
+    } else if (b.density < valley) {
+      valley = b.density;
+      valley_at = i;
+    }
+    if (valley_at > first && i > valley_at && valley <= kTurnValleyRatio * peak &&
+        valley <= kTurnValleyRatio * b.density) {
+      close_lobe(bends, first, valley_at - 1, t);  // the valley bend starts the next lobe
+      first = valley_at;
+      peak = 0.0;
+      for (std::size_t k = valley_at; k <= i; ++k) peak = std::max(peak, bends[k].density);
+      valley = std::numeric_limits<double>::infinity();
+    }
+  }
+  close_lobe(bends, first, bends.size() - 1, t);
   return t;
 }
 
@@ -133,7 +189,7 @@ PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
   m.path_length = length.value();
   m.path_length_m = m.path_length * grid.cell_edge();
   m.turn_angle_rad = turn_sum.value();
-  const TurnSummary turns = merged_turns(vertices);
+  const TurnSummary turns = merged_turns(vertices, m.path_length);
   m.turns = turns.count;
   m.max_turn_rad = turns.max;
   if (m.path_length > 0.0) m.smoothness_mean = m.turn_angle_rad / m.path_length;

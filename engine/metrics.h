@@ -47,13 +47,17 @@ struct PathMetrics {
   double motion_time_s = 0.0;
 };
 
-// docs/METRICS.md "turns": consecutive turns of one sign whose vertices lie less than
-// kTurnMergeLength cells of arc apart form one merged turn (a curve sampled every 0.1 cell
-// rounding a corner is one turn, like the corner); a merged turn counts when its total |turn|
-// exceeds kTurnThreshold. Vertices within kStraightTolerance of 0 are collinear joints: they
-// neither join nor split a merged turn.
+// docs/METRICS.md "turns": a turn is one lobe of the path's curvature. Each vertex's |turn| is
+// spread over kTurnSpread either side of it (at most half way to the neighbouring turning
+// vertex), a curvature density; vertices of one sign whose spreads touch form a run (so polyline
+// corners more than 2 kTurnSpread apart never merge); a run is cut at every valley where the
+// density falls to kTurnValleyRatio of the peaks on both sides (two rounded corners), and a lobe
+// longer than kTurnMaxExtent cells of arc is cut into ceil(extent / kTurnMaxExtent) equal
+// pieces (a U-turn rounded as one bend). A turn counts when its angle exceeds kTurnThreshold.
+// Vertices within kStraightTolerance of 0 are collinear joints: they neither join nor split.
 inline constexpr double kTurnThreshold = 0.05;      // rad (about 2.9 degrees)
-inline constexpr double kTurnMergeLength = 1.0;     // cells
+inline constexpr double kTurnValleyRatio = 0.75;    // valley density / the lower adjacent peak
+inline constexpr double kTurnMaxExtent = 3.0;       // cells of arc, first to last vertex
 inline constexpr double kStraightTolerance = 1e-9;  // rad
 // docs/METRICS.md "smoothness_max".
 inline constexpr double kSmoothnessWindow = 1.0;  // cells

@@ -22,43 +22,59 @@ struct MotionTimeParams {
   bool include_plan_time = false;              // add the planning CPU time
 };
 
-// Headings come from segments of non-zero length only (duplicate waypoints are skipped, never a
-// NaN heading); an interior "vertex" is the joint of two consecutive non-zero segments, and its
-// turn is the atan2 heading difference wrapped to (-pi, pi].
+// Every metric is defined on the geometry of the path, so a polyline and a densely sampled curve
+// of the same shape score alike (docs/METRICS.md "Path metrics"). Headings come from segments of
+// non-zero length only (duplicate waypoints are skipped, never a NaN heading); a vertex is the
+// joint of two consecutive non-zero segments, its turn the atan2 heading difference wrapped to
+// (-pi, pi], its position the arc length from the start to it.
 struct PathMetrics {
-  double path_length = 0.0;     // cells: sum of segment lengths (paper 000 eq. 5.2a)
-  double path_length_m = 0.0;   // x cell_edge
-  std::int64_t path_nodes = 0;  // waypoints, duplicates included (eq. 5.2b)
-  std::int64_t turns = 0;       // vertices whose |turn| > kTurnThreshold
-  double turn_angle_rad = 0.0;  // sum of |turn| (eq. 5.2c, computed robustly)
-  // Curvature proxy at a vertex: |turn| / ((l_in + l_out) / 2), l the two segment lengths in
-  // cells, i.e. rad per cell. Mean over ALL vertices (collinear ones count 0) and max; 0 when
-  // the path has no vertex.
-  double smoothness_mean = 0.0;
+  double path_length = 0.0;      // cells: sum of segment lengths (paper 000 eq. 5.2a)
+  double path_length_m = 0.0;    // x cell_edge
+  std::int64_t waypoints = 0;    // vertices before curve sampling (eq. 5.2b "Node No.")
+  std::int64_t turns = 0;        // merged turns above kTurnThreshold
+  double turn_angle_rad = 0.0;   // sum of |turn| over every vertex (eq. 5.2c, computed robustly)
+  double max_turn_rad = 0.0;     // the largest merged turn
+  double smoothness_mean = 0.0;  // turn_angle_rad / path_length: rad per cell (0 if no length)
+  // The largest heading change within any kSmoothnessWindow of arc, each vertex's |turn|
+  // spread over kTurnSpread either side of it, divided by the window: rad per cell.
   double smoothness_max = 0.0;
   // Exact minimum distance, in cells, from the path to any obstacle cell (closed squares,
   // border included): DistanceTransform::segment_clearance. And in metres.
   double min_clearance = 0.0;
   double min_clearance_m = 0.0;
-  // Paper 000 eq. 5.2e: path_length_m / v_L + path_nodes * t_o + turn_angle_rad / v_s
+  // Paper 000 eq. 5.2e: path_length_m / v_L + waypoints * t_o + turn_angle_rad / v_s
   // (+ plan time in seconds if include_plan_time).
   double motion_time_s = 0.0;
 };
 
-inline constexpr double kTurnThreshold = 1e-9;  // rad, docs/METRICS.md "turns"
+// docs/METRICS.md "turns": a turn is one lobe of the path's curvature. Each vertex's |turn| is
+// spread over kTurnSpread either side of it (at most half way to the neighbouring turning
+// vertex), a curvature density; vertices of one sign whose spreads touch form a run (so polyline
+// corners more than 2 kTurnSpread apart never merge); a run is cut at every valley where the
+// density falls to kTurnValleyRatio of the peaks on both sides (two rounded corners), and a lobe
+// longer than kTurnMaxExtent cells of arc is cut into ceil(extent / kTurnMaxExtent) equal
+// pieces (a U-turn rounded as one bend). A turn counts when its angle exceeds kTurnThreshold.
+// Vertices within kStraightTolerance of 0 are collinear joints: they neither join nor split.
+inline constexpr double kTurnThreshold = 0.05;      // rad (about 2.9 degrees)
+inline constexpr double kTurnValleyRatio = 0.75;    // valley density / the lower adjacent peak
+inline constexpr double kTurnMaxExtent = 3.0;       // cells of arc, first to last vertex
+inline constexpr double kStraightTolerance = 1e-9;  // rad
+// docs/METRICS.md "smoothness_max".
+inline constexpr double kSmoothnessWindow = 1.0;  // cells
+inline constexpr double kTurnSpread = 0.25;       // cells either side of a vertex
 
 // Precondition: the path passed validate_path (non-empty, finite, inside the grid).
-// `waypoints` >= 0 overrides path_nodes (and its motion-time term) for a path that is a sampled
-// curve: docs/METRICS.md counts waypoints before sampling.
+// `waypoints` >= 0 overrides the point count as PathMetrics::waypoints (and its motion-time
+// term) for a path that is a sampled curve: docs/METRICS.md counts waypoints before sampling.
 PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
                                  const MotionTimeParams& motion = {}, std::int64_t plan_time_ns = 0,
                                  std::int64_t waypoints = -1);
 
-// (name, value) in a fixed order, for the aggregator and the per-run records.
 // Sum of segment lengths in cells, compensated: the same length compute_path_metrics reports.
 double polyline_length(std::span<const Point> path);
 
-inline constexpr std::size_t kPathMetricCount = 10;
+// (name, value) in a fixed order, for the aggregator and the per-run records.
+inline constexpr std::size_t kPathMetricCount = 11;
 std::array<std::pair<std::string_view, double>, kPathMetricCount> metric_values(
     const PathMetrics& m);
 

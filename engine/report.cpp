@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "engine/environment.h"
+#include "engine/metric_specs.h"
 #include "engine/statistics.h"
 
 namespace agv {
@@ -34,21 +35,23 @@ json summary_json(const Summary& s) {
           {"ci95", {number_or_null(s.ci95.lo), number_or_null(s.ci95.hi)}}};
 }
 
-json paired_json(const PairedComparison& c) {
+json paired_json(const PairedComparison& c, const MetricSpec& spec) {
   return {{"pairs", c.pairs},
-          {"geo_mean_ratio", number_or_null(c.geo_mean_ratio)},
-          {"ci95", {number_or_null(c.geo_mean_ci95.lo), number_or_null(c.geo_mean_ci95.hi)}},
-          {"ratios_excluded", c.ratio_excluded},
+          {"better", spec.better == Better::smaller ? "smaller" : "larger"},
           {"wins", c.wins},
           {"ties", c.ties},
           {"losses", c.losses},
-          {"wilcoxon_p", number_or_null(c.wilcoxon.p)}};
+          {"ratio", spec.ratio == RatioKind::plain ? "plain" : "shifted"},
+          {"geo_mean_ratio", number_or_null(c.geo_mean_ratio)},
+          {"ci95", {number_or_null(c.geo_mean_ci95.lo), number_or_null(c.geo_mean_ci95.hi)}},
+          {"ratios_excluded", c.ratio_excluded},
+          {"mean_difference", number_or_null(c.mean_difference)},
+          {"difference_ci95",
+           {number_or_null(c.mean_difference_ci95.lo), number_or_null(c.mean_difference_ci95.hi)}},
+          {"wilcoxon_p", number_or_null(c.wilcoxon.p)},
+          {"wilcoxon_exact", c.wilcoxon.exact}};
 }
 
-// The metrics a paired comparison reports (costs: smaller is better); and the work counters
-// (kWorkCounterNames), each only between planners that both define it.
-constexpr std::array<std::string_view, 5> kPairedMetrics = {"path_length", "path_nodes", "turns",
-                                                            "turn_angle_rad", "motion_time_s"};
 constexpr double kTieTolerance = 1e-9;
 
 std::size_t metric_index(std::string_view name) {
@@ -114,66 +117,69 @@ json planner_cell_json(const SweepResults& r, const SweepCell& cell, std::size_t
       {"timing", {{"plan_time_ns", summary_json(summarize(plan_times))}, {"phases", phase_json}}}};
 }
 
-// Pairs over maps where both planners succeeded, in map order.
-void paired_values(const SweepResults& r, const SweepCell& cell, std::size_t a, std::size_t b,
-                   std::size_t metric, std::vector<double>& va, std::vector<double>& vb) {
-  va.clear();
-  vb.clear();
-  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
-    const std::int64_t task = static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m;
-    const RunSlot& sa = r.run(task, a);
-    const RunSlot& sb = r.run(task, b);
-    if (!sa.done || !sb.done || sa.outcome != Outcome::success || sb.outcome != Outcome::success)
-      continue;
-    const double x =
-        metric < kRunMetricNames.size() ? sa.metrics[metric] : static_cast<double>(sa.plan_time_ns);
-    const double y =
-        metric < kRunMetricNames.size() ? sb.metrics[metric] : static_cast<double>(sb.plan_time_ns);
-    if (std::isfinite(x) && std::isfinite(y)) {
-      va.push_back(x);
-      vb.push_back(y);
-    }
-  }
+// One metric of one run by name: a run metric or an extra the planner reported; NaN when the
+// run does not define it.
+double slot_value(const RunSlot& s, std::string_view name) {
+  for (std::size_t i = 0; i < kRunMetricNames.size(); ++i)
+    if (kRunMetricNames[i] == name) return s.metrics[i];
+  for (const auto& [extra, value] : s.extra)
+    if (extra == name) return value;
+  return kNaN;
 }
 
-// A work counter (or other extra metric) of one run; NaN when the run does not report it.
-double extra_value(const RunSlot& s, std::string_view name) {
-  for (const auto& [n, value] : s.extra)
-    if (n == name) return value;
-  return std::numeric_limits<double>::quiet_NaN();
-}
+bool succeeded(const RunSlot& s) { return s.done && s.outcome == Outcome::success; }
 
-// Whether the planner reports this counter on some run of the cell (docs/METRICS.md "Work
-// counters": a planner defines the counters of its kind on every run it returns from).
-bool defines_counter(const SweepResults& r, const SweepCell& cell, std::size_t planner,
-                     std::string_view name) {
+// Whether some successful run of (cell, planner) defines the metric: a metric a planner never
+// reports is absent from its comparisons, never compared as 0 or NaN (docs/METRICS.md
+// "Paired comparisons").
+bool defines(const SweepResults& r, const SweepCell& cell, std::size_t planner,
+             std::string_view name) {
   for (int m = 0; m < r.plan.maps_per_cell; ++m) {
     const RunSlot& s =
         r.run(static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m, planner);
-    if (s.done && std::isfinite(extra_value(s, name))) return true;
+    if (succeeded(s) && std::isfinite(slot_value(s, name))) return true;
   }
   return false;
 }
 
-// paired_values() for a work counter.
-void paired_counter_values(const SweepResults& r, const SweepCell& cell, std::size_t a,
-                           std::size_t b, std::string_view name, std::vector<double>& va,
-                           std::vector<double>& vb) {
+// Pairs over the maps where both planners succeeded and both values are finite, in map order.
+void paired_values(const SweepResults& r, const SweepCell& cell, std::size_t a, std::size_t b,
+                   std::string_view name, std::vector<double>& va, std::vector<double>& vb) {
   va.clear();
   vb.clear();
   for (int m = 0; m < r.plan.maps_per_cell; ++m) {
     const std::int64_t task = static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m;
     const RunSlot& sa = r.run(task, a);
     const RunSlot& sb = r.run(task, b);
-    if (!sa.done || !sb.done || sa.outcome != Outcome::success || sb.outcome != Outcome::success)
-      continue;
-    const double x = extra_value(sa, name);
-    const double y = extra_value(sb, name);
+    if (!succeeded(sa) || !succeeded(sb)) continue;
+    const double x = slot_value(sa, name);
+    const double y = slot_value(sb, name);
     if (std::isfinite(x) && std::isfinite(y)) {
       va.push_back(x);
       vb.push_back(y);
     }
   }
+}
+
+// Planning time over every map both planners ran, failures included (docs/METRICS.md
+// "Statistics conventions": a planner that fails slowly is not timed on its easy maps only).
+void paired_times(const SweepResults& r, const SweepCell& cell, std::size_t a, std::size_t b,
+                  std::vector<double>& va, std::vector<double>& vb) {
+  va.clear();
+  vb.clear();
+  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
+    const std::int64_t task = static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m;
+    const RunSlot& sa = r.run(task, a);
+    const RunSlot& sb = r.run(task, b);
+    if (!sa.done || !sb.done) continue;
+    va.push_back(static_cast<double>(sa.plan_time_ns));
+    vb.push_back(static_cast<double>(sb.plan_time_ns));
+  }
+}
+
+PairedComparison compare(const std::vector<double>& va, const std::vector<double>& vb,
+                         const MetricSpec& spec) {
+  return compare_paired(va, vb, spec.better, spec.ratio, kTieTolerance);
 }
 
 json paired_cell_json(const SweepConfig& config, const SweepResults& r, const SweepCell& cell) {
@@ -185,21 +191,19 @@ json paired_cell_json(const SweepConfig& config, const SweepResults& r, const Sw
   for (std::size_t p = 0; p < r.labels.size(); ++p) {
     if (p == base || r.maps_of(cell, p) == 0) continue;
     json metrics = json::object();
-    for (auto name : kPairedMetrics) {
-      paired_values(r, cell, p, base, metric_index(name), va, vb);
-      metrics[std::string(name)] = paired_json(compare_paired(va, vb, kTieTolerance));
+    for (const MetricSpec& spec : kMetricSpecs) {
+      if (!spec.paired || !defines(r, cell, p, spec.name) || !defines(r, cell, base, spec.name))
+        continue;
+      paired_values(r, cell, p, base, spec.name, va, vb);
+      metrics[std::string(spec.name)] = paired_json(compare(va, vb, spec), spec);
     }
-    for (const char* name : kWorkCounterNames) {
-      if (!defines_counter(r, cell, p, name) || !defines_counter(r, cell, base, name)) continue;
-      paired_counter_values(r, cell, p, base, name, va, vb);
-      metrics[name] = paired_json(compare_paired(va, vb, kTieTolerance));
-    }
-    paired_values(r, cell, p, base, kRunMetricNames.size(), va, vb);
+    paired_times(r, cell, p, base, va, vb);
     out.push_back(
         {{"planner", r.labels[p]},
          {"baseline", r.labels[base]},
          {"metrics", metrics},
-         {"timing", {{"plan_time_ns", paired_json(compare_paired(va, vb, kTieTolerance))}}}});
+         {"timing",
+          {{"plan_time_ns", paired_json(compare(va, vb, kPlanTimeSpec), kPlanTimeSpec)}}}});
   }
   return out;
 }
@@ -324,14 +328,14 @@ std::string summary_table(const SweepConfig& config, const SweepResults& r) {
       if (s.outcome != Outcome::success) continue;
       ++ok;
       turns.push_back(s.metrics[it]);
-      checks.push_back(extra_value(s, "collision_checks"));
+      checks.push_back(slot_value(s, "collision_checks"));
       const RunSlot& sb = r.run(task, base);
       if (sb.done && sb.outcome == Outcome::success) {
         a.push_back(s.metrics[il]);
         b.push_back(sb.metrics[il]);
       }
     }
-    const PairedComparison c = compare_paired(a, b, kTieTolerance);
+    const PairedComparison c = compare(a, b, *find_metric_spec("path_length"));
     char ci[64];
     std::snprintf(ci, sizeof ci, "[%.3f,%.3f]", c.geo_mean_ci95.lo, c.geo_mean_ci95.hi);
     std::snprintf(line, sizeof line, "%-24s %8lld %7.1f%% %10.4f %12s %8.2f %12.0f %10.1f\n",

@@ -10,7 +10,7 @@
 
 namespace agv {
 
-inline constexpr int kReportSchemaVersion = 1;
+inline constexpr int kReportSchemaVersion = 2;
 
 nlohmann::json build_report(const SweepConfig& config, const SweepResults& results);
 

@@ -108,57 +108,59 @@ WilcoxonResult wilcoxon_signed_rank(std::span<const double> differences,
   };
   std::vector<Signed> d;
   d.reserve(differences.size());
-  bool zeros = false;
-  for (double x : differences) {
-    if (x == 0.0) {
-      zeros = true;
-      continue;
-    }
-    d.push_back({std::abs(x), x > 0.0});
-  }
+  for (double x : differences)
+    if (x != 0.0) d.push_back({std::abs(x), x > 0.0});  // zeros dropped
   const std::size_t n = d.size();
   r.n = n;
   if (n == 0) return r;
   std::stable_sort(d.begin(), d.end(),
                    [](const Signed& a, const Signed& b) { return a.abs < b.abs; });
 
-  // Mid-ranks over tie groups; V and the tie correction sum(t^3 - t) in one pass.
-  CompensatedSum v;
+  // Doubled mid-ranks (i + 1 + j for the group [i, j), an integer), V and the tie correction
+  // sum(t^3 - t) in one pass.
+  std::vector<std::size_t> doubled(n);
+  std::size_t doubled_v = 0;
   double tie_term = 0.0;
   for (std::size_t i = 0; i < n;) {
     std::size_t j = i + 1;
     while (j < n && d[j].abs - d[j - 1].abs <= rank_tie_tolerance * d[j].abs) ++j;
-    const double rank = (static_cast<double>(i + 1) + static_cast<double>(j)) / 2.0;
-    for (std::size_t k = i; k < j; ++k)
-      if (d[k].positive) v.add(rank);
+    for (std::size_t k = i; k < j; ++k) {
+      doubled[k] = i + 1 + j;
+      if (d[k].positive) doubled_v += doubled[k];
+    }
     const double t = static_cast<double>(j - i);
     tie_term += t * t * t - t;
     i = j;
   }
-  r.v = v.value();
+  r.v = static_cast<double>(doubled_v) / 2.0;
   const double nn = static_cast<double>(n);
-  const double centre = nn * (nn + 1.0) / 4.0;
 
-  if (n < 50 && tie_term == 0.0 && !zeros) {
-    // Exact: count subsets of {1..n} by rank sum. Counts stay below 2^50, exact in a double.
+  if (n <= kWilcoxonExactMaxN) {
+    // count[s]: sign assignments whose positive doubled ranks sum to s. The doubled ranks sum
+    // to n(n+1), so the distribution is symmetric about n(n+1)/2. Counts stay below 2^50,
+    // exact in a double.
     r.exact = true;
-    const std::size_t max_sum = n * (n + 1) / 2;
-    std::vector<double> count(max_sum + 1, 0.0);
+    const std::size_t total = n * (n + 1);
+    std::vector<double> count(total + 1, 0.0);
     count[0] = 1.0;
-    for (std::size_t k = 1; k <= n; ++k)
-      for (std::size_t s = k * (k + 1) / 2; s >= k; --s) count[s] += count[s - k];
-    const auto stat = static_cast<std::size_t>(std::llround(r.v));
-    // R: P(V >= stat) in the upper half, P(V <= stat) in the lower, doubled and capped at 1.
-    double tail = 0.0;
-    if (r.v > centre) {
-      for (std::size_t s = stat; s <= max_sum; ++s) tail += count[s];
-    } else {
-      for (std::size_t s = 0; s <= stat; ++s) tail += count[s];
+    std::size_t reach = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      reach += doubled[k];
+      for (std::size_t s = reach; s >= doubled[k]; --s) count[s] += count[s - doubled[k]];
     }
-    r.p = std::min(1.0, 2.0 * std::ldexp(tail, -static_cast<int>(n)));
+    // Both tails: |2 V' - total| >= |2 v - total| (integers, so no rounding question).
+    const std::size_t deviation = doubled_v >= total - doubled_v ? doubled_v - (total - doubled_v)
+                                                                 : (total - doubled_v) - doubled_v;
+    CompensatedSum tail;
+    for (std::size_t s = 0; s <= total; ++s) {
+      const std::size_t dev = s >= total - s ? s - (total - s) : (total - s) - s;
+      if (dev >= deviation) tail.add(count[s]);
+    }
+    r.p = std::min(1.0, std::ldexp(tail.value(), -static_cast<int>(n)));
     return r;
   }
 
+  const double centre = nn * (nn + 1.0) / 4.0;
   const double sigma = std::sqrt(nn * (nn + 1.0) * (2.0 * nn + 1.0) / 24.0 - tie_term / 48.0);
   double z = r.v - centre;
   const double correction = z > 0.0 ? 0.5 : z < 0.0 ? -0.5 : 0.0;
@@ -171,13 +173,16 @@ WilcoxonResult wilcoxon_signed_rank(std::span<const double> differences,
 }
 
 PairedComparison compare_paired(std::span<const double> candidate, std::span<const double> baseline,
-                                double tie_tolerance) {
+                                Better better, RatioKind ratio, double tie_tolerance) {
   if (candidate.size() != baseline.size())
     throw std::invalid_argument("compare_paired: candidate and baseline differ in length");
+  const double shift = ratio == RatioKind::shifted ? 1.0 : 0.0;
   PairedComparison r;
-  std::vector<double> differences;
+  std::vector<double> differences;  // tied pairs as 0, for the Wilcoxon test
+  std::vector<double> raw;          // c - b, for the mean difference
   std::vector<double> logs;
   differences.reserve(candidate.size());
+  raw.reserve(candidate.size());
   logs.reserve(candidate.size());
   for (std::size_t i = 0; i < candidate.size(); ++i) {
     const double c = candidate[i];
@@ -187,15 +192,18 @@ PairedComparison compare_paired(std::span<const double> candidate, std::span<con
     const bool tie = std::abs(c - b) <= tie_tolerance * std::max(std::abs(c), std::abs(b));
     if (tie) {
       ++r.ties;
-    } else if (c < b) {
+    } else if ((c < b) == (better == Better::smaller)) {
       ++r.wins;
     } else {
       ++r.losses;
     }
     differences.push_back(tie ? 0.0 : c - b);
-    if (c > 0.0 && b > 0.0) {
-      logs.push_back(std::log(c / b));
-    } else if (c == 0.0 && b == 0.0) {
+    raw.push_back(c - b);
+    const double cs = c + shift;
+    const double bs = b + shift;
+    if (cs > 0.0 && bs > 0.0) {
+      logs.push_back(std::log(cs / bs));
+    } else if (cs == 0.0 && bs == 0.0) {
       logs.push_back(0.0);
     } else {
       ++r.ratio_excluded;
@@ -208,6 +216,9 @@ PairedComparison compare_paired(std::span<const double> candidate, std::span<con
     const Interval li = t_interval(m, logs.size(), 0.95);
     if (li.defined()) r.geo_mean_ci95 = {std::exp(li.lo), std::exp(li.hi)};
   }
+  const MeanSd md = mean_sd(raw);
+  r.mean_difference = md.mean;
+  r.mean_difference_ci95 = t_interval(md, raw.size(), 0.95);
   r.wilcoxon = wilcoxon_signed_rank(differences, tie_tolerance);
   return r;
 }

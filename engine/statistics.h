@@ -60,15 +60,19 @@ Summary summarize(std::span<const double> values);
 // Wilson score interval of a proportion, z from the normal quantile. NaN for n = 0.
 Interval wilson_interval(std::int64_t successes, std::int64_t n, double confidence = 0.95);
 
-// Two-sided Wilcoxon signed-rank test on paired differences, following R's wilcox.test(x, y,
-// paired = TRUE) with its defaults (correct = TRUE):
-// - zero differences are dropped (Wilcoxon's convention);
+// Two-sided Wilcoxon signed-rank test on paired differences (docs/METRICS.md "Statistics
+// conventions", reports/SCHEMA.md):
+// - zero differences are dropped (Wilcoxon's convention, R's default; not Pratt's);
 // - |d| are ranked with mid-ranks for ties; in sorted order a value within
 //   rank_tie_tolerance * (its magnitude) of the previous one joins its tie group (0 = exact);
-// - exact null distribution (dynamic programming over rank sums) when n < 50 and there were
-//   neither ties nor zeros; otherwise the normal approximation with tie correction
+// - n <= kWilcoxonExactMaxN: the exact null distribution of V GIVEN those mid-ranks, each sign
+//   +-1 with probability 1/2, enumerated by dynamic programming over doubled ranks (integers),
+//   also with ties and after zeros were dropped; p = P(|V - n(n+1)/4| >= |v - n(n+1)/4|), which is
+//   R's 2 min(P(V <= v), P(V >= v)) capped at 1 (the distribution is symmetric);
+// - above: the normal approximation with tie correction
 //   sigma^2 = n(n+1)(2n+1)/24 - sum(t^3 - t)/48 and continuity correction 0.5.
 // n = 0: v 0, p NaN. Precondition: no NaN.
+inline constexpr std::size_t kWilcoxonExactMaxN = 50;
 struct WilcoxonResult {
   std::size_t n = 0;  // non-zero differences used
   double v = 0.0;     // R's V: sum of the ranks of the positive differences
@@ -78,28 +82,43 @@ struct WilcoxonResult {
 WilcoxonResult wilcoxon_signed_rank(std::span<const double> differences,
                                     double rank_tie_tolerance = 0.0);
 
+// Which way a metric improves (docs/METRICS.md "Metric directions").
+enum class Better { smaller, larger };
+
+// How a paired comparison forms its per-map ratio (docs/METRICS.md "Statistics conventions"):
+// plain c / b for metrics that are positive on every sensible path (lengths, times), or the
+// shifted (c + 1) / (b + 1) for counts, which are 0 on many maps (a straight path has 0 turns)
+// and would otherwise leave exactly the most extreme maps out of the ratio.
+enum class RatioKind { plain, shifted };
+
 struct PairedComparison {
   std::size_t pairs = 0;  // positions where neither value is NaN (both runs succeeded)
-  // Costs: win = candidate smaller. Tie when |c - b| <= tie_tolerance * max(|c|, |b|).
+  // Win = candidate better in the metric's direction. Tie when
+  // |c - b| <= tie_tolerance * max(|c|, |b|).
   std::size_t wins = 0;
   std::size_t ties = 0;
   std::size_t losses = 0;
-  // Geometric mean of candidate / baseline over the pairs with a finite positive ratio, or
-  // both zero (ratio 1). Pairs with exactly one zero, or a negative value, have no log ratio:
-  // they are left out and counted in ratio_excluded. Interval: t interval of the mean log
-  // ratio, exponentiated (NaN for fewer than 2 ratios; geo_mean NaN for none).
+  // Geometric mean of the per-pair ratio (RatioKind) over the pairs where it has a finite
+  // logarithm; both sides 0 count as ratio 1. A plain ratio with exactly one side 0, or any
+  // ratio with a non-positive side, has none: such pairs are counted in ratio_excluded, never
+  // silently lost. Interval: t interval of the mean log ratio, exponentiated (NaN for fewer
+  // than 2 ratios; geo_mean NaN for none).
   std::size_t ratio_count = 0;
   std::size_t ratio_excluded = 0;
   double geo_mean_ratio = kNaN;
   Interval geo_mean_ci95;
-  // On d = candidate - baseline, with tied pairs (as above) as zeros and the same tolerance
-  // for tied ranks.
+  // Mean of d = candidate - baseline over every pair (no pair is dropped), with its t interval
+  // (NaN for fewer than 2 pairs; NaN mean for none).
+  double mean_difference = kNaN;
+  Interval mean_difference_ci95;
+  // On d, with tied pairs (as above) as zeros and the same tolerance for tied ranks.
   WilcoxonResult wilcoxon;
 };
 
 // candidate and baseline must have the same length, aligned by task; NaN marks a missing run.
 // Throws std::invalid_argument on a length mismatch.
 PairedComparison compare_paired(std::span<const double> candidate, std::span<const double> baseline,
+                                Better better = Better::smaller, RatioKind ratio = RatioKind::plain,
                                 double tie_tolerance = 1e-9);
 
 }  // namespace agv

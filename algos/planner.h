@@ -111,7 +111,7 @@ struct PlanResult {
   CornerRule rule = CornerRule::allow;
   // The work counters the planner defines (docs/METRICS.md "Work counters").
   WorkCounters work;
-  // Waypoints before curve sampling (docs/METRICS.md path_nodes), for planners whose path is a
+  // Waypoints before curve sampling (docs/METRICS.md waypoints), for planners whose path is a
   // sampled curve; -1 when the path's own points are the waypoints.
   std::int64_t waypoints_before_sampling = -1;
   // Planner-specific scalar metrics (aggregated like the engine's, under these names).

@@ -1,5 +1,5 @@
 """Shared helpers for the report scripts (plot.py, check_claims.py): loading and checking an
-`agvbench run` report against reports/SCHEMA.md (schema_version 1), and the few statistics
+`agvbench run` report against reports/SCHEMA.md (schema_version 2), and the few statistics
 the scripts need (Student t quantiles, pooling of per-cell summaries).
 
 Standard library only: this module never imports matplotlib, so a bad report is rejected with
@@ -10,12 +10,12 @@ import json
 import math
 from statistics import NormalDist
 
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2
 BAD_INPUT = 2  # exit code for bad or old-schema input, as the engine uses
 
 
 class ReportError(Exception):
-    """A file that is not a readable schema-1 agvbench report (message names the field)."""
+    """A file that is not a readable schema-2 agvbench report (message names the field)."""
 
 
 # ---------------------------------------------------------------------------------------------
@@ -55,7 +55,7 @@ def load_json(path):
 
 
 def check_report(doc):
-    """Raise ReportError unless doc has the schema-1 shape the scripts rely on."""
+    """Raise ReportError unless doc has the schema-2 shape the scripts rely on."""
     if not isinstance(doc, dict):
         raise ReportError(f"expected a JSON object (an agvbench report), got {type(doc).__name__}")
     if "schema_version" not in doc:

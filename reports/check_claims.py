@@ -243,6 +243,10 @@ def cell_ratio_from_report(cell, cand, base, metric):
     comp = _comparison(entry, metric)
     if not isinstance(comp, dict):
         return None
+    # Schema 2 compares counts by the shifted ratio (c + 1) / (b + 1) (reports/SCHEMA.md); a
+    # paper's figure is a plain ratio, recomputed from the runs instead.
+    if comp.get("ratio", "plain") != "plain":
+        return None
     pairs = int(comp.get("pairs") or 0)
     excluded = int(comp.get("ratios_excluded") or 0)
     n = pairs - excluded

@@ -34,7 +34,9 @@ METRIC_LABELS = {
     "path_length": ("cells", "path length"),
     "path_length_m": ("m", "path length (m)"),
     "optimality_ratio": ("length / optimum", "optimality ratio"),
-    "path_nodes": ("waypoints", "path nodes"),
+    "waypoints": ("waypoints", "waypoints"),
+    "max_turn_rad": ("rad", "largest turn"),
+    "any_angle_ratio": ("ratio", "length / any-angle optimum"),
     "turns": ("turns", "turns"),
     "turn_angle_rad": ("rad", "turn angle sum"),
     "smoothness_mean": ("rad / cell", "mean curvature proxy"),
@@ -42,10 +44,11 @@ METRIC_LABELS = {
     "min_clearance": ("cells", "min clearance"),
     "min_clearance_m": ("m", "min clearance (m)"),
     "motion_time_s": ("s", "motion time (eq. 5.2e)"),
-    "expanded_nodes": ("nodes", "expanded nodes"),
+    "search_expansions": ("nodes", "search expansions"),
+    "collision_checks": ("checks", "collision checks"),
 }
-PAIRED_ORDER = ["path_length", "motion_time_s", "path_nodes", "turns", "turn_angle_rad",
-                "expanded_nodes"]
+PAIRED_ORDER = ["path_length", "motion_time_s", "waypoints", "turns", "turn_angle_rad",
+                "collision_checks"]
 MARKERS = ["o", "s", "^", "D", "v", "P", "X", "*", "<", ">", "h", "p"]
 DASHES = ["-", "--", "-.", ":"]
 
@@ -605,8 +608,8 @@ def write_summary(rep, outdir, pictures):
                f"`{rep.baseline}` on the maps where both succeeded, 95% interval, % change, pairs.\n")
     if pictures:
         out.append("Pictures: " + ", ".join(f"[{p}]({p})" for p in pictures) + "\n")
-    cols = [m for m in ["path_length", "optimality_ratio", "path_nodes", "turns", "turn_angle_rad",
-                        "min_clearance", "expanded_nodes"] if m in rep.metric_names()]
+    cols = [m for m in ["path_length", "optimality_ratio", "any_angle_ratio", "waypoints", "turns",
+                        "turn_angle_rad", "min_clearance", "collision_checks"] if m in rep.metric_names()]
     for key in sorted(rep.worlds, key=lambda k: (rep.generators.index(k[0]), k[1] * k[2])):
         cells = rep.worlds[key]
         out.append(f"## {rep.world_title(key)}\n")
@@ -664,7 +667,7 @@ def write_summary(rep, outdir, pictures):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description="Plot an agvbench sweep report (schema_version 1).")
+    ap = argparse.ArgumentParser(description="Plot an agvbench sweep report (schema_version 2).")
     ap.add_argument("report", help="report JSON written by `agvbench run`")
     ap.add_argument("outdir", help="folder for the PNGs and summary.md (created)")
     ap.add_argument("--dpi", type=int, default=100, help="PNG resolution (default 100)")

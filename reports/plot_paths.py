@@ -136,8 +136,8 @@ def describe(run):
             parts.append(f"length {mt['path_length']:.2f}")
         if _num(mt.get("turns")):
             parts.append(f"{int(mt['turns'])} turns")
-        if _num(mt.get("expanded_nodes")):
-            parts.append(f"{int(mt['expanded_nodes'])} expanded")
+        if _num(mt.get("collision_checks")):
+            parts.append(f"{int(mt['collision_checks'])} checks")
     elif run["message"]:
         parts.append(run["message"][:50])
     return ", ".join(parts)

@@ -322,7 +322,7 @@ class HmaStarPlanner final : public Planner {
       evaluations = swarm.evaluations();
     }
     // MA*'s counts describe its own path; the swarm step re-placed and dropped waypoints, so
-    // the counts are those of the path returned (docs/METRICS.md path_nodes).
+    // the counts are those of the path returned (docs/METRICS.md waypoints).
     result.waypoints_before_sampling = static_cast<std::int64_t>(result.path.size());
     for (auto& [name, value] : result.extra)
       if (name == "key_points") value = static_cast<double>(result.path.size());

@@ -195,7 +195,8 @@ TEST(BaselineEdges, ParametersDeclared) {
   EXPECT_EQ(make("aco").params.number("evaporation"), 0.5);
   EXPECT_EQ(make("aco").params.integer("ants"), 20);
   EXPECT_EQ(make("aco").params.integer("iterations"), 150);
-  EXPECT_EQ(make("aco").params.choice("corner_rule"), "allow");
+  // The default collision model's rule (core/collision_model.h); paper 002's grid is `allow`.
+  EXPECT_EQ(make("aco").params.choice("corner_rule"), "no_corner_cut");
   EXPECT_EQ(make("prm").params.choice("corner_rule"), "no_corner_cut");
   EXPECT_THROW(make("rrt", {{"step", 0.0}}), InputError);
   EXPECT_THROW(make("birrt", {{"goal_radius", 1.0}}), InputError);  // RRT only

@@ -405,7 +405,7 @@ double extra_value(const PlanResult& r, const std::string& name) {
 }
 
 TEST_P(PlannerContract, WaypointCountIsThatOfThePathReturned) {
-  // waypoints_before_sampling (the engine's path_nodes and motion time when >= 0) must describe
+  // waypoints_before_sampling (the engine's waypoints and motion time when >= 0) must describe
   // the path returned: -1 or its point count, unless the path is a sampled curve, where it is
   // the vertex count of the polyline the curve was fitted to, i.e. of the same planner's path
   // with `smoothing: none` (the curve is the last step, after every random draw).

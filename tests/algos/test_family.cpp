@@ -228,7 +228,9 @@ TEST(FamilyParams, DeclaredWithPaperDefaults) {
   EXPECT_EQ(make("ma_star").params.choice("g_mode"), "euclid_from_start");
   EXPECT_NEAR(make("ma_star").params.number("r_obs"), std::sqrt(0.5), 1e-15);
   const auto inner = make("improved_astar_internal");
-  EXPECT_EQ(inner.params.choice("corner_rule"), "no_squeeze");
+  // Every corner rule defaults to the collision model's (paper 002's no_squeeze is its config's
+  // model, configs/paper-002.json).
+  EXPECT_EQ(inner.params.choice("corner_rule"), "no_corner_cut");
   EXPECT_EQ(inner.params.choice("heuristic"), "octile");
   EXPECT_DOUBLE_EQ(inner.params.number("diagonal_cost"), 1.4);
   EXPECT_DOUBLE_EQ(inner.params.number("turn_weight"), 1.2);
@@ -481,8 +483,9 @@ TEST(PaperProperties, NoSqueezeNeverPassesBetweenDiagonalObstacles) {
   Scratch scratch;
   int squeezes_allowed = 0;
   for (const char* name : {"improved_astar_internal", "improved_astar"}) {
-    const auto planner = make(name);
-    const auto classic = make("astar");
+    // Paper 002's rule (its config's collision model).
+    const auto planner = make(name, {{"corner_rule", "no_squeeze"}});
+    const auto classic = make("astar", {{"corner_rule", "allow"}});
     for (const MapInstance& m : maps()) {
       const PlanResult r = run(planner, m, scratch);
       ASSERT_TRUE(r.ok());
@@ -741,8 +744,10 @@ TEST(ImprovedAStar, IssueExamplesNoLongerDoubleBack) {
   for (const Example& e : examples) {
     SCOPED_TRACE(e.generator);
     const MapInstance m = plan_command_map(e.generator, 20, e.density, e.seed, e.map_index);
-    const PlanResult inner = run(make("improved_astar_internal"), m, scratch);
-    const PlanResult full = run(make("improved_astar"), m, scratch);
+    // Under paper 002's no_squeeze, the rule `agvbench plan` used when the issue was filed.
+    const nlohmann::json rule = {{"corner_rule", "no_squeeze"}};
+    const PlanResult inner = run(make("improved_astar_internal", rule), m, scratch);
+    const PlanResult full = run(make("improved_astar", rule), m, scratch);
     ASSERT_TRUE(inner.ok() && full.ok());
     ASSERT_NEAR(length(inner.path), e.internal_length, 1e-4);
     EXPECT_LE(largest_heading_change(full.path), kReversalAngle);

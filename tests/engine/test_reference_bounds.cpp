@@ -43,7 +43,11 @@ TEST(ReferenceBounds, NoPathBeatsTheAnyAngleOptimumOnThousandsOfMaps) {
                   {"time_limit_s", 5.0},
                   {"planners", static_planners()}};
   const SweepConfig config = parse_config(j);
+  const std::size_t max_turn = metric_index("max_turn_rad");
+  const std::size_t turns = metric_index("turns");
   std::map<std::string, int> successes;
+  // Per cell and planner: the sum of turns over successful runs, and their count.
+  std::map<std::pair<std::string, std::string>, std::pair<double, int>> turn_sums;
   int checked = 0;
   for_each_run(config, [&](const MapTaskRun& run) {
     const RunOutput& out = run.output;
@@ -54,6 +58,14 @@ TEST(ReferenceBounds, NoPathBeatsTheAnyAngleOptimumOnThousandsOfMaps) {
     const double ratio = out.metrics[kAnyAngleMetric];
     ASSERT_TRUE(std::isfinite(ratio)) << label;
     EXPECT_GE(ratio, 1.0 - 1e-9) << label << " task " << run.task;
+    // A grid search or a smoothed path never turns back (raw sampling paths may: not asserted).
+    const PlannerKind kind = find_planner(config.planners[run.planner].name)->kind;
+    if (kind == PlannerKind::grid_search || label == "hma_star") {
+      EXPECT_LE(out.metrics[max_turn], 3.0) << label << " task " << run.task;
+    }
+    auto& sum = turn_sums[{run.context.plan.cell_of(run.task).key, label}];
+    sum.first += out.metrics[turns];
+    ++sum.second;
     if (label == "astar" || label == "dijkstra" || label == "bidir_astar") {
       EXPECT_NEAR(out.metrics[kOptimalityMetric], 1.0, 1e-12) << label << " task " << run.task;
     }
@@ -61,6 +73,17 @@ TEST(ReferenceBounds, NoPathBeatsTheAnyAngleOptimumOnThousandsOfMaps) {
   // 3 x 2 x 3 cells of 120 maps: 2160 maps, and every planner found most of its paths.
   EXPECT_GT(checked, 20000);
   for (const auto& name : static_planners()) EXPECT_GT(successes[name], 1000) << name;
+  // A smoothed curve's turns mean what a polyline's do (docs/METRICS.md "turns"): kin_astar's
+  // B-spline and improved_astar's Bezier corners stay within 2x of A*'s mean in every cell.
+  for (const SweepCell& cell : plan_sweep(config).cells) {
+    const auto mean = [&](const char* label) {
+      const auto& [sum, n] = turn_sums[{cell.key, label}];
+      return n > 0 ? sum / n : 0.0;
+    };
+    for (const char* smoothed : {"kin_astar", "improved_astar"})
+      // (+ 1 turn: on 12x12 maps A* can average under one turn.)
+      EXPECT_LE(mean(smoothed), 2.0 * mean("astar") + 1.0) << cell.key << " " << smoothed;
+  }
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Synthetic agvbench sweep reports (reports/SCHEMA.md, schema_version 1) for testing the report
+"""Synthetic agvbench sweep reports (reports/SCHEMA.md, schema_version 2) for testing the report
 scripts without the engine.
 
 Each planner gets a simple per-map model relative to the baseline (multiplicative factors with
@@ -22,10 +22,10 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "reports"))
 import agvreport  # noqa: E402
 
-METRICS = ["path_length", "path_length_m", "path_nodes", "turns", "turn_angle_rad",
+METRICS = ["path_length", "path_length_m", "waypoints", "turns", "turn_angle_rad",
            "smoothness_mean", "smoothness_max", "min_clearance", "motion_time_s",
-           "expanded_nodes", "optimality_ratio"]
-PAIRED = ["path_length", "path_nodes", "turns", "turn_angle_rad", "expanded_nodes",
+           "search_expansions", "optimality_ratio"]
+PAIRED = ["path_length", "waypoints", "turns", "turn_angle_rad", "search_expansions",
           "motion_time_s"]
 
 # factor: multiplicative effect vs the baseline; sigma: log-normal spread per map.
@@ -119,9 +119,9 @@ def simulate(spec):
                     optimum = straight * (1.02 + 0.35 * d) * math.exp(rng.gauss(0, 0.03))
                     base = {
                         "path_length": optimum * math.exp(abs(rng.gauss(0, 0.01))),
-                        "path_nodes": max(2.0, round((w + h) * 0.55 * math.exp(rng.gauss(0, 0.1)))),
+                        "waypoints": max(2.0, round((w + h) * 0.55 * math.exp(rng.gauss(0, 0.1)))),
                         "turns": max(1.0, round((2 + 12 * d) * (w / 16) ** 0.5 * math.exp(rng.gauss(0, 0.25)))),
-                        "expanded_nodes": round(w * h * (0.15 + 0.8 * d) * math.exp(rng.gauss(0, 0.2))),
+                        "search_expansions": round(w * h * (0.15 + 0.8 * d) * math.exp(rng.gauss(0, 0.2))),
                         "min_clearance": max(0.0, 0.5 - 0.6 * d + rng.gauss(0, 0.1)),
                         "time": 40.0 * w * h * (0.2 + d) * math.exp(rng.gauss(0, 0.15)),
                     }
@@ -147,16 +147,16 @@ def simulate(spec):
 
                         if ok:
                             length = base["path_length"] * f("length")
-                            nodes = max(2.0, round(base["path_nodes"] * f("nodes", sigma=0.1)))
+                            nodes = max(2.0, round(base["waypoints"] * f("nodes", sigma=0.1)))
                             turns = max(0.0, round(base["turns"] * f("turns", sigma=0.15)))
                             angle = turns * 0.785 * math.exp(prng.gauss(0, 0.1))
                             metrics.update({
                                 "path_length": length, "path_length_m": length,
-                                "path_nodes": nodes, "turns": turns, "turn_angle_rad": angle,
+                                "waypoints": nodes, "turns": turns, "turn_angle_rad": angle,
                                 "smoothness_mean": angle / length, "smoothness_max": 0.785 if turns else 0.0,
                                 "min_clearance": base["min_clearance"] + mod.get("clearance_add", 0.0),
                                 "motion_time_s": length / 1.0 + nodes * 0.1 + angle / math.pi,
-                                "expanded_nodes": max(1.0, round(base["expanded_nodes"] * f("expanded", sigma=0.1))),
+                                "search_expansions": max(1.0, round(base["search_expansions"] * f("expanded", sigma=0.1))),
                                 "optimality_ratio": length / optimum,
                             })
                         rec["metrics"] = metrics
@@ -217,7 +217,7 @@ def aggregate(spec, records):
                 })
     n_runs = len(records)
     return {
-        "schema_version": 1,
+        "schema_version": 2,
         "tool": "agvbench",
         "config": {
             "name": spec["name"], "seed": spec["seed"], "generators": spec["generators"],

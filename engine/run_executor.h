@@ -44,10 +44,9 @@ std::optional<Outcome> outcome_from_string(std::string_view name);
 // travel under their own names with the planner's extra metrics (RunOutput::result.extra), so
 // only planners that define one report it (docs/METRICS.md "Work counters").
 inline constexpr std::array<std::string_view, kPathMetricCount + 2> kRunMetricNames = {
-    "path_length",      "path_length_m",   "waypoints",       "turns",
-    "turn_angle_rad",   "max_turn_rad",    "smoothness_mean", "smoothness_max",
-    "min_clearance",    "min_clearance_m", "motion_time_s",   "optimality_ratio",
-    "any_angle_ratio"};
+    "path_length",   "path_length_m",    "waypoints",      "turns",         "turn_angle_rad",
+    "max_turn_rad",  "smoothness_mean",  "smoothness_max", "min_clearance", "min_clearance_m",
+    "motion_time_s", "optimality_ratio", "any_angle_ratio"};
 inline constexpr std::size_t kOptimalityMetric = kPathMetricCount;
 inline constexpr std::size_t kAnyAngleMetric = kPathMetricCount + 1;
 using RunMetrics = std::array<double, kRunMetricNames.size()>;

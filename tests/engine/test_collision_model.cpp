@@ -11,8 +11,8 @@
 #include "core/input_error.h"
 #include "engine/map_task.h"
 #include "engine/sweep_config.h"
-#include "tests/engine/for_each_run.h"
 #include "engine/validator.h"
+#include "tests/engine/for_each_run.h"
 
 namespace agv {
 namespace {

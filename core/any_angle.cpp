@@ -130,44 +130,11 @@ bool scratch_heap_worse(const AnyAngleScratch::Entry& a, const AnyAngleScratch::
   return a.node > b.node;
 }
 
-// Marks every cell reachable from `from` by 8-connected moves under `rule` in scratch.reached;
-// returns the generation that marks them.
+// Marks every cell reachable from `from` by 8-connected moves under `rule` in
+// scratch.component.stamp; returns the generation that marks them.
 std::uint32_t flood_fill(const Grid& grid, int from, CornerRule rule, AnyAngleScratch& scratch) {
-  const std::uint8_t* occupancy = grid.occupancy();
-  const int stride = grid.stride();
-  std::array<int, 8> offset{};
-  for (int d = 0; d < 8; ++d) offset[d] = kDy[d] * stride + kDx[d];
-  const MoveTable& table = move_table(rule);
-  auto& reached = scratch.reached;
-  const auto size = static_cast<std::size_t>(grid.padded_size());
-  if (reached.size() < size) {
-    reached.assign(size, 0);
-    scratch.generation = 0;
-  }
-  if (++scratch.generation == 0) {  // wrapped: old marks could alias the new generation
-    std::fill(reached.begin(), reached.end(), 0);
-    scratch.generation = 1;
-  }
-  const std::uint32_t gen = scratch.generation;
-  auto& queue = scratch.queue;
-  queue.clear();
-  queue.push_back(from);
-  reached[from] = gen;
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const int i = queue[head];
-    unsigned free_mask = 0;
-    for (int d = 0; d < 8; ++d) free_mask |= (occupancy[i + offset[d]] == 0 ? 1U : 0U) << d;
-    unsigned moves = table[free_mask];
-    while (moves != 0) {
-      const int d = std::countr_zero(moves);
-      moves &= moves - 1;
-      const int j = i + offset[d];
-      if (reached[j] == gen) continue;
-      reached[j] = gen;
-      queue.push_back(j);
-    }
-  }
-  return gen;
+  return agv::flood_fill(grid.occupancy(), grid.stride(), grid.padded_size(), from, -1, rule,
+                         scratch.component);
 }
 
 // Length of the shortest 8-connected path from `from` to `to` under `rule` (straight 1,
@@ -232,7 +199,7 @@ void collect_nodes(const Grid& grid, Cell start, Cell goal, bool allow, std::uin
   add({2 * goal.x + 1, 2 * goal.y + 1}, 0, 0, false);
   const std::uint8_t* occ = grid.occupancy();
   const int stride = grid.stride();
-  const auto& reached = s.reached;
+  const auto& reached = s.component.stamp;
   // Vertices (i, j), i in [0, width], j in [0, height], tile by tile.
   s.tiles_x = grid.width() / kTile + 1;
   s.tiles_y = grid.height() / kTile + 1;
@@ -362,7 +329,7 @@ std::optional<double> search(const Grid& grid, Cell start, Cell goal, CornerRule
   // connects like no_corner_cut); with them, as under allow.
   const CornerRule connectivity = allow ? CornerRule::allow : CornerRule::no_squeeze;
   const std::uint32_t gen = flood_fill(grid, grid.index(start), connectivity, s);
-  if (s.reached[grid.index(goal)] != gen) return std::nullopt;
+  if (s.component.stamp[grid.index(goal)] != gen) return std::nullopt;
 
   collect_nodes(grid, start, goal, allow, gen, s);
   // Worth its cost on maps with many bend points only (perf/README.md "Any-angle reference");

@@ -27,6 +27,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/connectivity.h"
 #include "core/corner_rule.h"
 #include "core/grid.h"
 
@@ -43,9 +44,7 @@ struct HalfPoint {
 // Reusable per-thread buffers: a caller asking many queries allocates nothing once the largest
 // map has been seen.
 struct AnyAngleScratch {
-  std::vector<std::uint32_t> reached;  // flood fill: reached[i] == generation
-  std::vector<int> queue;
-  std::uint32_t generation = 0;
+  ConnectivityScratch component;  // the start's component (core/connectivity.h flood_fill)
   // Graph nodes: 0 = start, 1 = goal, then the bend points of the start's component.
   std::vector<HalfPoint> node;
   std::vector<std::int8_t> block_x, block_y;  // a blocked quadrant's direction from the node

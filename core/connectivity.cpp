@@ -6,11 +6,8 @@
 
 namespace agv {
 
-bool connected(const std::uint8_t* occupancy, int stride, int padded_size, int from, int to,
-               CornerRule rule, ConnectivityScratch& scratch) {
-  if (occupancy[from] != 0 || occupancy[to] != 0) return false;
-  if (from == to) return true;
-
+std::uint32_t flood_fill(const std::uint8_t* occupancy, int stride, int padded_size, int from,
+                         int stop, CornerRule rule, ConnectivityScratch& scratch) {
   std::array<int, 8> offset{};
   for (int d = 0; d < 8; ++d) offset[d] = kDy[d] * stride + kDx[d];
   const MoveTable& table = move_table(rule);
@@ -39,12 +36,20 @@ bool connected(const std::uint8_t* occupancy, int stride, int padded_size, int f
       moves &= moves - 1;
       const int j = i + offset[d];
       if (stamp[j] == gen) continue;
-      if (j == to) return true;
       stamp[j] = gen;
+      if (j == stop) return gen;
       queue.push_back(j);
     }
   }
-  return false;
+  return gen;
+}
+
+bool connected(const std::uint8_t* occupancy, int stride, int padded_size, int from, int to,
+               CornerRule rule, ConnectivityScratch& scratch) {
+  if (occupancy[from] != 0 || occupancy[to] != 0) return false;
+  if (from == to) return true;
+  const std::uint32_t gen = flood_fill(occupancy, stride, padded_size, from, to, rule, scratch);
+  return scratch.stamp[to] == gen;
 }
 
 bool connected(const Grid& grid, Cell a, Cell b, CornerRule rule, ConnectivityScratch& scratch) {

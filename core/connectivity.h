@@ -19,6 +19,13 @@ struct ConnectivityScratch {
   std::uint32_t generation = 0;
 };
 
+// Stamps every free cell reachable from `from` (which must be free) with the returned generation
+// in scratch.stamp, stopping as soon as `stop` is stamped (-1: the whole component). The one
+// flood fill of the project: connected() and the any-angle reference's component
+// (core/any_angle.cpp) both stand on it.
+std::uint32_t flood_fill(const std::uint8_t* occupancy, int stride, int padded_size, int from,
+                         int stop, CornerRule rule, ConnectivityScratch& scratch);
+
 // `occupancy` is a padded row-major array (row length `stride`, a blocked one-cell border), as
 // Grid::occupancy(); `from` and `to` are padded indices. False when either cell is blocked.
 bool connected(const std::uint8_t* occupancy, int stride, int padded_size, int from, int to,

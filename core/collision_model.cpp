@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <numbers>
 
+#include "core/input_error.h"
+
 namespace agv {
 
 SightRule CollisionModel::sight() const {
@@ -27,6 +29,17 @@ int strictness(CornerRule rule) {
   return 0;
 }
 }  // namespace
+
+void check_model_clearance(const CollisionModel& model, const std::string& field) {
+  const double max = max_model_clearance(model.corner_rule);
+  if (model.clearance >= 0.0 && model.clearance <= max) return;
+  char range[96];
+  std::snprintf(range, sizeof range, "%g is outside [0, %.6g]", model.clearance, max);
+  throw InputError(field + ": " + range + ", the range a model with corner_rule " +
+                   std::string(to_string(model.corner_rule)) +
+                   " supports (every grid move between free cell centres must keep it; an "
+                   "inflated map for larger clearances is not built)");
+}
 
 bool looser(CornerRule rule, CornerRule than) { return strictness(rule) < strictness(than); }
 

@@ -31,6 +31,10 @@ struct CollisionModel {
 // clearance would need an inflated map for the grid references (not built).
 double max_model_clearance(CornerRule rule);
 
+// Throws InputError naming `field` unless 0 <= model.clearance <= max_model_clearance(rule):
+// the one check of a model's clearance, for a config's "collision" and `plan --clearance`.
+void check_model_clearance(const CollisionModel& model, const std::string& field);
+
 // Is `rule` looser than `than` (allows a move `than` refuses)? allow < no_squeeze < no_corner_cut.
 bool looser(CornerRule rule, CornerRule than);
 

@@ -114,16 +114,8 @@ CollisionModel plan_model(const PlanCommand& cmd) {
     throw InputError("--corner-rule: \"" + cmd.corner_rule +
                      "\" is not a corner rule (allow, no_squeeze, no_corner_cut)");
   model.corner_rule = *rule;
-  const double max = max_model_clearance(model.corner_rule);
-  if (!(cmd.clearance >= 0.0 && cmd.clearance <= max)) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf,
-                  "--clearance: %g is outside [0, %.6g], the range a model with "
-                  "corner rule %s supports",
-                  cmd.clearance, max, cmd.corner_rule.c_str());
-    throw InputError(buf);
-  }
   model.clearance = cmd.clearance;
+  check_model_clearance(model, "--clearance");
   return model;
 }
 

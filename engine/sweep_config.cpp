@@ -142,19 +142,8 @@ CollisionModel parse_collision(const json& j) {
   model.corner_rule =
       *corner_rule_from_string(r.choice("corner_rule", std::string(to_string(model.corner_rule)),
                                         {"allow", "no_squeeze", "no_corner_cut"}));
-  const double max = max_model_clearance(model.corner_rule);
-  if (r.has("clearance") && r.raw("clearance").is_number() &&
-      r.raw("clearance").get<double>() > max && r.raw("clearance").get<double>() <= 10.0) {
-    char value[64];
-    std::snprintf(value, sizeof value, "%g is more than %.6g", r.raw("clearance").get<double>(),
-                  max);
-    throw InputError(std::string("collision.clearance: ") + value +
-                     ", the most a model with corner_rule " +
-                     std::string(to_string(model.corner_rule)) +
-                     " supports (every grid move between free cell centres must keep it; an "
-                     "inflated map for larger clearances is not built)");
-  }
-  model.clearance = r.number("clearance", 0.0, 0.0, max);
+  model.clearance = r.number("clearance", 0.0, -1e300, 1e300);
+  check_model_clearance(model, "collision.clearance");
   r.finish();
   return model;
 }

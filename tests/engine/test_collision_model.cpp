@@ -60,10 +60,10 @@ TEST(CollisionModel, ErrorsNameTheField) {
   EXPECT_NE(config_error(small_sweep({{"clearance", -0.1}}, {"astar"})).find("collision.clearance"),
             std::string::npos);
   const std::string wide = config_error(small_sweep({{"clearance", 0.6}}, {"astar"}));
-  EXPECT_NE(wide.find("collision.clearance: 0.6 is more than 0.5"), std::string::npos) << wide;
+  EXPECT_NE(wide.find("collision.clearance: 0.6 is outside [0, 0.5]"), std::string::npos) << wide;
   const std::string squeeze =
       config_error(small_sweep({{"corner_rule", "allow"}, {"clearance", 0.3}}, {"astar"}));
-  EXPECT_NE(squeeze.find("more than 0.207107"), std::string::npos) << squeeze;
+  EXPECT_NE(squeeze.find("outside [0, 0.207107]"), std::string::npos) << squeeze;
 }
 
 TEST(CollisionModel, IsTheDefaultOfEveryPlannersRuleAndClearance) {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/rng.h"
+#include "core/text_file.h"
 
 namespace agv {
 
@@ -364,15 +365,12 @@ SweepConfig parse_config(const json& j) {
 }
 
 SweepConfig load_config(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open config file");
+  const std::string text = read_text_file(path, "config file", std::uintmax_t{64} << 20);
   json j;
   try {
-    j = json::parse(in);
+    j = json::parse(text);
   } catch (const json::parse_error& e) {
     // nlohmann reports a byte offset; turn it into line and column for the user.
-    std::ifstream again(path);
-    std::string text((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
     std::size_t line = 1, col = 1;
     for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
       if (text[i] == '\n') {

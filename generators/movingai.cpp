@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "core/text_file.h"
+
 namespace agv {
 namespace {
 
@@ -150,8 +152,7 @@ Grid parse_map(std::istream& in, const std::string& name) {
 }
 
 Grid read_map(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(cat(path, ": cannot open map file"));
+  std::istringstream in(read_text_file(path, "map file"));
   return parse_map(in, path);
 }
 
@@ -239,8 +240,7 @@ std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name)
 }
 
 std::vector<ScenarioQuery> read_scen(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(cat(path, ": cannot open scenario file"));
+  std::istringstream in(read_text_file(path, "scenario file"));
   return parse_scen(in, path);
 }
 

@@ -64,7 +64,15 @@ expect "unknown shape parameter" 'generators\[0\]\.params\.walls: unknown parame
 good_config report.json | sed 's/"sizes"/"generators": ["rooms"], "map": {"room_size": 6}, "sizes"/' >shape_in_map.json
 expect "shape parameter in map (old config)" 'map\.room_size: a shape parameter of generator "rooms"; it now goes in' "$bin" run shape_in_map.json
 
-expect "missing config file" 'nope.json: cannot open' "$bin" run nope.json --out report.json
+# Odd files (issue 15): only regular files are read, and the message names the file.
+mkdir -p config_dir
+expect "config is a directory" 'config file "config_dir": a directory, not a regular file' \
+  "$bin" run config_dir --out report.json
+expect "config is a device" 'config file "/dev/zero": a character device' "$bin" validate /dev/zero
+rm -f fifo.map && mkfifo fifo.map
+expect "map is a FIFO" 'map file "fifo.map": a FIFO, not a regular file' \
+  timeout 20 "$bin" plan --map fifo.map --start 0,0 --goal 1,1
+expect "missing config file" 'config file "nope.json": No such file' "$bin" run nope.json --out report.json
 good_config report.json >good.json
 expect "resume into another journal" '--resume: the journal is appended to' \
   "$bin" run good.json --resume j.jsonl --runs-out other.jsonl

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/input_error.h"
 #include "core/rng.h"
 #include "generators/movingai.h"
 
@@ -113,6 +114,38 @@ TEST(MovingAi, WriteThenReadIsIdentical) {
   write_map_file(arena, tmp);
   EXPECT_TRUE(read_map(tmp).same_cells(arena));
   std::filesystem::remove(tmp);
+}
+
+// Editors on some systems start a text file with a UTF-8 byte-order mark: it is skipped, on the
+// map's first line and on the scenario's, so the file reads like the one without it.
+TEST(MovingAi, AByteOrderMarkIsSkipped) {
+  Rng rng(9, 9);
+  Grid g(7, 5);
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) g.set_blocked(x, y, rng.chance(0.3));
+  }
+  std::ostringstream text;
+  write_map(g, text);
+  const std::string map = testing::TempDir() + "/agv_bom.map";
+  std::ofstream(map, std::ios::binary) << "\xEF\xBB\xBF" << text.str();
+  EXPECT_TRUE(read_map(map).same_cells(g));
+  const std::string scen = testing::TempDir() + "/agv_bom.scen";
+  std::ofstream(scen, std::ios::binary)
+      << "\xEF\xBB\xBFversion 1\n0\tagv_bom.map\t7\t5\t0\t0\t1\t1\t1.41421356\n";
+  ASSERT_EQ(read_scen(scen).size(), 1u);
+  std::filesystem::remove(map);
+  std::filesystem::remove(scen);
+}
+
+// Only regular files are read: a directory is refused by name, not read as an empty map.
+TEST(MovingAi, ADirectoryIsNotAMap) {
+  try {
+    read_map(testing::TempDir());
+    FAIL() << "a directory was read as a map";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("a directory, not a regular file"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(MovingAi, AcceptsAllCharactersAndTrailingBlankLines) {

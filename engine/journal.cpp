@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/input_error.h"
+#include "engine/run_record.h"
 
 namespace agv {
 
@@ -49,6 +50,15 @@ RecordRestorer::RecordRestorer(const std::string& config_hash, SweepResults& res
 
 bool RecordRestorer::restore(const json& rec, const std::string& where) {
   try {
+    const json tool = rec.value("tool", json());
+    const json version = rec.value("journal_version", json());
+    if (tool != kJournalTool || version != kJournalVersion)
+      throw InputError(where + ": not a record of this agvbench's journal format (it says tool " +
+                       (tool.is_null() ? std::string("(none)") : tool.dump()) +
+                       ", journal_version " +
+                       (version.is_null() ? std::string("(none)") : version.dump()) +
+                       "; this agvbench reads tool \"" + kJournalTool + "\", journal_version " +
+                       std::to_string(kJournalVersion) + ")");
     const std::string hash = rec.at("config_hash").get<std::string>();
     if (hash != config_hash_)
       throw InputError(where + ": journal was written by a different config (hash " + hash +

@@ -10,6 +10,8 @@
 #include "algos/registry.h"
 #include "engine/cli_params.h"
 #include "engine/commands.h"
+#include "engine/json_text.h"
+#include "engine/output_paths.h"
 #include "engine/report.h"
 #include "engine/run_executor.h"
 #include "engine/sweep_plan.h"
@@ -129,6 +131,10 @@ int command_plan(const PlanCommand& cmd) {
     infos.push_back(info);
   }
   check_cli_params(infos, cmd.params);
+  if (!cmd.json_out.empty()) {
+    check_paths({{"--map", cmd.map_file}}, {{"--json-out", cmd.json_out}});
+    ignore_file_size_signal();
+  }
 
   Grid grid;
   Cell start, goal;
@@ -231,7 +237,7 @@ int command_plan(const PlanCommand& cmd) {
                               {"runs", runs}};
   if (!cmd.json_out.empty()) write_json_atomic(doc, cmd.json_out);
   if (cmd.json) {
-    std::cout << doc.dump(1) << "\n";
+    std::cout << json_text(doc, 1) << "\n";
     return 0;
   }
 

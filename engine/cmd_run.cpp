@@ -10,6 +10,7 @@
 #include "algos/registry.h"
 #include "engine/commands.h"
 #include "engine/journal.h"
+#include "engine/output_paths.h"
 #include "engine/report.h"
 #include "engine/sweep_runner.h"
 
@@ -54,6 +55,35 @@ std::string run_count_text(const SweepConfig& config, const SweepPlan& plan) {
          " runs are scheduled (planners with an \"only\" scope)";
 }
 
+// Every path `run` reads or writes, checked before anything is written (engine/output_paths.h).
+void check_run_paths(const RunCommand& cmd, const std::string& config_path,
+                     const SweepConfig& config, SweepOptions& options) {
+  const bool resume = !options.resume_path.empty();
+  if (resume && !options.runs_path.empty()) {
+    if (!same_file(options.runs_path, options.resume_path))
+      throw InputError(
+          "--resume: the journal is appended to; --runs-out must be empty or the same file");
+    options.runs_path = options.resume_path;  // the same journal, however spelled
+  }
+  const OutputPath journal = resume
+                                 ? OutputPath{"--resume", options.resume_path, OutputKind::appended}
+                                 : OutputPath{cmd.runs_out.empty() ? "runs" : "--runs-out",
+                                              options.runs_path, OutputKind::new_journal};
+  check_paths({{"config file", config_path}},
+              {{cmd.out.empty() ? "report" : "--out", config.report_path}, journal});
+  ignore_file_size_signal();
+}
+
+// The report, also when the journal failed (then a failure of both is named in one message).
+void write_report(const SweepConfig& config, const SweepResults& results) {
+  try {
+    write_json_atomic(build_report(config, results), config.report_path);
+  } catch (const std::runtime_error& e) {
+    if (results.journal_error.empty()) throw;
+    throw std::runtime_error(results.journal_error + "; and the report: " + e.what());
+  }
+}
+
 }  // namespace
 
 // The default config is found from any working directory: first as given, then in the checkout
@@ -67,7 +97,8 @@ std::string locate_config(const std::string& path) {
 }
 
 int command_run(const RunCommand& cmd) {
-  SweepConfig config = load_config(locate_config(cmd.config));
+  const std::string config_path = locate_config(cmd.config);
+  SweepConfig config = load_config(config_path);
   if (cmd.threads >= 0) config.threads = cmd.threads;
   if (!cmd.out.empty()) config.report_path = cmd.out;
   if (!cmd.runs_out.empty()) config.runs_path = cmd.runs_out;
@@ -81,6 +112,7 @@ int command_run(const RunCommand& cmd) {
                       : cmd.resume.empty()  ? config.runs_path
                                             : "";
   options.resume_path = cmd.resume;
+  check_run_paths(cmd, config_path, config, options);
   if (!cmd.shard.empty())
     std::tie(options.shard_index, options.shard_count) = parse_shard(cmd.shard);
   options.isolation.enabled = cmd.isolate;
@@ -94,7 +126,19 @@ int command_run(const RunCommand& cmd) {
                  run_count_text(config, plan).c_str());
   }
   SweepResults results = run_sweep(config, options);
-  write_json_atomic(build_report(config, results), config.report_path);
+  write_report(config, results);
+  if (!results.journal_error.empty()) {
+    // The runs the journal lost are not in the report either: a resume runs them again.
+    const Coverage coverage = coverage_of(results);
+    std::fprintf(stderr,
+                 "agvbench: failed: %s; the sweep stopped with %lld of %lld runs recorded; "
+                 "report (marked incomplete): %s; once the cause is fixed, continue with "
+                 "--resume %s\n",
+                 results.journal_error.c_str(), static_cast<long long>(coverage.runs_present),
+                 static_cast<long long>(coverage.runs_expected), config.report_path.c_str(),
+                 (options.resume_path.empty() ? options.runs_path : options.resume_path).c_str());
+    return 1;
+  }
   if (results.interrupted) {
     std::fprintf(stderr,
                  "agvbench: interrupted: %lld runs done this time, %lld restored; report (marked "
@@ -122,12 +166,17 @@ int command_run(const RunCommand& cmd) {
 
 int command_merge(const std::string& config_path, const std::vector<std::string>& journals,
                   const std::string& out) {
-  const SweepConfig config = load_config(locate_config(config_path));
+  const std::string located = locate_config(config_path);
+  const SweepConfig config = load_config(located);
+  const std::string path = out.empty() ? config.report_path : out;
+  std::vector<InputPath> inputs = {{"config file", located}};
+  for (const auto& j : journals) inputs.push_back({"journal", j});
+  check_paths(inputs, {{out.empty() ? "report" : "--out", path}});
+  ignore_file_size_signal();
   SweepResults results = empty_results(config);
   const std::string hash = config_hash(config);
   for (const auto& j : journals) restore_journal(j, hash, results);
   update_completeness(results);
-  const std::string path = out.empty() ? config.report_path : out;
   write_json_atomic(build_report(config, results), path);
   const Coverage coverage = coverage_of(results);
   std::printf("merged %zu journals: %lld of %lld runs present%s; report: %s\n", journals.size(),
@@ -139,6 +188,10 @@ int command_merge(const std::string& config_path, const std::vector<std::string>
 
 int command_validate(const std::string& config_path) {
   const SweepConfig config = load_config(config_path);
+  // The paths a plain `run CONFIG` would write (--out, --runs-out and --resume are run's).
+  check_paths(
+      {{"config file", config_path}},
+      {{"report", config.report_path}, {"runs", config.runs_path, OutputKind::new_journal}});
   const SweepPlan plan = plan_sweep(config);
   std::printf("%s: ok: %s\n", config_path.c_str(), run_count_text(config, plan).c_str());
   return 0;

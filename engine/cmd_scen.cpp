@@ -8,6 +8,7 @@
 #include "algos/registry.h"
 #include "engine/cli_params.h"
 #include "engine/commands.h"
+#include "engine/json_text.h"
 #include "engine/metrics.h"
 #include "generators/movingai.h"
 
@@ -98,7 +99,7 @@ int command_scen(const ScenCommand& cmd) {
       {"first_mismatches", bad},
       {"timing", {{"total_s", total_ns / 1e9}, {"median_query_us", median_ns / 1e3}}}};
   if (cmd.json) {
-    std::cout << doc.dump(1) << "\n";
+    std::cout << json_text(doc, 1) << "\n";
   } else {
     std::printf(
         "%s on %s: %zu queries, %lld mismatches (%lld failed), max abs error %.3g, "
@@ -108,7 +109,7 @@ int command_scen(const ScenCommand& cmd) {
         static_cast<long long>(expansions));
     std::printf("timing: total %.3f s, median %.1f us per query\n", total_ns / 1e9,
                 median_ns / 1e3);
-    for (const auto& b : bad) std::printf("  mismatch: %s\n", b.dump().c_str());
+    for (const auto& b : bad) std::printf("  mismatch: %s\n", json_text(b).c_str());
   }
   return mismatches == 0 ? 0 : 1;
 }

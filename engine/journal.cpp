@@ -1,36 +1,93 @@
 #include "engine/journal.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 
 #include "core/input_error.h"
+#include "core/text_file.h"
+#include "engine/run_record.h"
 
 namespace agv {
 
 using nlohmann::json;
 
-JournalWriter::JournalWriter(const std::string& path, bool append) {
+JournalWriter::JournalWriter(const std::string& path, bool append) : path_(path) {
   if (path.empty()) return;
   namespace fs = std::filesystem;
-  const fs::path p(path);
-  if (p.has_parent_path()) fs::create_directories(p.parent_path());
-  if (append && fs::exists(p)) {
+  if (append) {
     // Cut a torn last line: keep everything up to the last newline.
-    std::ifstream in(path, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto last = text.rfind('\n');
-    const std::uintmax_t keep = last == std::string::npos ? 0 : last + 1;
-    if (keep != text.size()) fs::resize_file(p, keep);
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (!ec && size > 0) {
+      std::ifstream in(path, std::ios::binary);
+      const std::string text((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
+      const auto last = text.rfind('\n');
+      const std::uintmax_t keep = last == std::string::npos ? 0 : last + 1;
+      if (keep != text.size()) {
+        fs::resize_file(path, keep, ec);
+        if (ec) fail("cannot cut its torn last line", ec.value());
+      }
+    }
   }
-  out_.open(path, append ? std::ios::out | std::ios::app : std::ios::out | std::ios::trunc);
-  if (!out_) throw InputError("cannot open journal \"" + path + "\" for writing");
+  const int flags = O_WRONLY | O_CREAT | O_CLOEXEC | (append ? O_APPEND : O_TRUNC);
+  fd_ = ::open(path.c_str(), flags, 0644);
+  if (fd_ < 0) fail("cannot open it for writing", errno);
+  last_sync_ = std::chrono::steady_clock::now();
+}
+
+JournalWriter::JournalWriter(int fd, std::string name) : fd_(fd), path_(std::move(name)) {
+  last_sync_ = std::chrono::steady_clock::now();
+}
+
+JournalWriter::~JournalWriter() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void JournalWriter::fail(const std::string& doing, int error) {
+  failure_ = "journal \"" + path_ + "\": " + doing + ": " + std::strerror(error);
+  throw JournalError(failure_);
+}
+
+void JournalWriter::sync_locked() {
+  if (::fsync(fd_) != 0) fail("fsync failed", errno);
+  unsynced_ = false;
+  last_sync_ = std::chrono::steady_clock::now();
 }
 
 void JournalWriter::write(const std::string& lines) {
   std::lock_guard lock(mutex_);
-  out_ << lines;
-  out_.flush();
+  if (!failure_.empty()) throw JournalError(failure_);
+  std::size_t done = 0;
+  while (done < lines.size()) {
+    const ssize_t n = ::write(fd_, lines.data() + done, lines.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    // A zero-byte write of a non-empty buffer makes no progress: treated as a full disk.
+    if (n <= 0)
+      fail("write failed after " + std::to_string(done) + " of " + std::to_string(lines.size()) +
+               " bytes",
+           n < 0 ? errno : ENOSPC);
+    done += static_cast<std::size_t>(n);
+  }
+  unsynced_ = true;
+  if (std::chrono::steady_clock::now() - last_sync_ >= kSyncInterval) sync_locked();
+}
+
+void JournalWriter::finish() {
+  std::lock_guard lock(mutex_);
+  if (fd_ < 0) return;
+  if (!failure_.empty()) throw JournalError(failure_);
+  if (unsynced_) sync_locked();
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) fail("close failed", errno);
 }
 
 namespace {
@@ -49,6 +106,15 @@ RecordRestorer::RecordRestorer(const std::string& config_hash, SweepResults& res
 
 bool RecordRestorer::restore(const json& rec, const std::string& where) {
   try {
+    const json tool = rec.value("tool", json());
+    const json version = rec.value("journal_version", json());
+    if (tool != kJournalTool || version != kJournalVersion)
+      throw InputError(where + ": not a record of this agvbench's journal format (it says tool " +
+                       (tool.is_null() ? std::string("(none)") : tool.dump()) +
+                       ", journal_version " +
+                       (version.is_null() ? std::string("(none)") : version.dump()) +
+                       "; this agvbench reads tool \"" + kJournalTool + "\", journal_version " +
+                       std::to_string(kJournalVersion) + ")");
     const std::string hash = rec.at("config_hash").get<std::string>();
     if (hash != config_hash_)
       throw InputError(where + ": journal was written by a different config (hash " + hash +
@@ -103,8 +169,9 @@ bool RecordRestorer::restore(const json& rec, const std::string& where) {
 
 JournalStats restore_journal(const std::string& path, const std::string& config_hash,
                              SweepResults& results) {
+  require_regular_file(path, "journal");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open journal");
+  if (!in) throw InputError("journal \"" + path + "\": " + std::strerror(errno));
   RecordRestorer restorer(config_hash, results);
   JournalStats stats;
   std::string line;

@@ -5,10 +5,11 @@
 // exactly (doubles are written with 17 significant digits), so statistics computed from a
 // resumed or merged sweep equal those of an uninterrupted one.
 
-#include <fstream>
+#include <chrono>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -16,19 +17,51 @@
 
 namespace agv {
 
-// Appends records, one flush per write.
+// A journal write, flush or sync that failed: the message names the journal and the OS error.
+class JournalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Appends records with write(2), each write checked and retried until whole, and fsync'd at
+// least every kSyncInterval and at finish(): a full disk or a file-size limit is an error
+// naming the journal, never a silently shorter journal.
 class JournalWriter {
  public:
+  // Records between two syncs are lost only if the machine itself goes down; a killed process
+  // loses nothing written. Measured on configs/quick.json (480 map tasks, 3.9 MB of records,
+  // about 30 s on 2 threads, ext4): an fsync per write took about 6 ms each, 2.9 s in all under
+  // the journal's lock (some 10%); once a second, about 30 fsyncs, under 1%.
+  static constexpr std::chrono::milliseconds kSyncInterval{1000};
+
   JournalWriter() = default;
   // append = false truncates; append = true first cuts a torn last line (a record cut short by
-  // a kill) so the next record starts on a line of its own.
+  // a kill) so the next record starts on a line of its own. Throws JournalError.
   JournalWriter(const std::string& path, bool append);
-  bool enabled() const { return out_.is_open(); }
+  // Writes to an open descriptor (owned from now on); `name` names it in messages.
+  JournalWriter(int fd, std::string name);
+  JournalWriter(const JournalWriter&) = delete;
+  JournalWriter& operator=(const JournalWriter&) = delete;
+  ~JournalWriter();
+
+  bool enabled() const { return fd_ >= 0; }
+  const std::string& path() const { return path_; }
+  // Appends whole lines. Throws JournalError; after a failure every later write throws too (a
+  // journal with a hole would restore as if the missing runs had never been run).
   void write(const std::string& lines);
+  // Syncs and closes; throws JournalError. A no-op when not enabled or already finished.
+  void finish();
 
  private:
-  std::ofstream out_;
+  [[noreturn]] void fail(const std::string& doing, int error);
+  void sync_locked();
+
+  int fd_ = -1;
+  std::string path_;
   std::mutex mutex_;
+  std::chrono::steady_clock::time_point last_sync_{};
+  bool unsynced_ = false;
+  std::string failure_;  // the first failure, repeated by later writes
 };
 
 struct JournalStats {
@@ -53,8 +86,9 @@ class RecordRestorer {
 };
 
 // Reads every record of `path` into `results` (whose plan and labels must be set). Throws
-// InputError for an unreadable file, a malformed line other than a torn last one, a record of
-// another config (hash mismatch) or one naming a cell, map or planner this sweep lacks.
+// InputError for an unreadable file, a malformed line other than a torn last one, a record
+// without this tool's name and journal version (engine/run_record.h), a record of another
+// config (hash mismatch) or one naming a cell, map or planner this sweep lacks.
 JournalStats restore_journal(const std::string& path, const std::string& config_hash,
                              SweepResults& results);
 

@@ -15,7 +15,9 @@ inline constexpr int kReportSchemaVersion = 2;
 nlohmann::json build_report(const SweepConfig& config, const SweepResults& results);
 
 // Temporary file in the same folder, fsync, rename: a reader (or a crash) sees the old report or
-// the new one, never a torn one. Creates the folder if needed. Throws std::runtime_error.
+// the new one, never a torn one. The folder must exist (engine/output_paths.h checks it before a
+// sweep); temporaries of this path left by a process that is gone are removed first. Throws
+// std::runtime_error naming `path` and the OS error.
 void write_json_atomic(const nlohmann::json& document, const std::string& path);
 
 // The report without `timing` and `environment` keys at any depth: what must be byte-identical

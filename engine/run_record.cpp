@@ -19,6 +19,8 @@ json run_record(const std::string& config_hash, std::uint64_t seed, const SweepC
   json phases = json::object();
   for (const auto& p : run.result.phases) phases[p.name] = p.ns;
   json rec = {
+      {"tool", kJournalTool},
+      {"journal_version", kJournalVersion},
       {"task_id", task_id(config_hash, cell, map_index, planner.label)},
       {"config_hash", config_hash},
       {"planner", planner.label},

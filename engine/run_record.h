@@ -9,6 +9,12 @@
 
 namespace agv {
 
+// Every record names its writer and the journal's format; resume and merge refuse a record of
+// another tool or version (reports/SCHEMA.md, "Per-run records"). Bump on any change of a
+// record's keys or of their meaning.
+inline constexpr const char* kJournalTool = "agvbench";
+inline constexpr int kJournalVersion = 1;
+
 nlohmann::json run_record(const std::string& config_hash, std::uint64_t seed, const SweepCell& cell,
                           int map_index, const PlannerEntry& planner, const MapSlot& map,
                           const RunOutput& run);

@@ -14,6 +14,7 @@
 
 #include "core/input_error.h"
 #include "engine/journal.h"
+#include "engine/json_text.h"
 #include "engine/map_task.h"
 #include "engine/progress.h"
 
@@ -145,7 +146,7 @@ std::string run_task_in_process(SweepState& s, MapTaskWorkspace& workspace, std:
       run_map_task(s.context, task, planners, workspace, [&](const MapTaskRun& run) {
         fill_run_slot(s.results.run(task, run.planner), run.output);
         ++s.executed;
-        if (s.keep_lines) lines += run.record().dump() + '\n';
+        if (s.keep_lines) lines += json_text(run.record()) + '\n';
       });
   return lines;
 }
@@ -176,7 +177,7 @@ std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard
       }
       s.restorer.restore(record, "worker record");
       ++s.executed;
-      if (s.keep_lines) lines += record.dump() + '\n';
+      if (s.keep_lines) lines += json_text(record) + '\n';
     }
   }
   return lines;
@@ -196,6 +197,17 @@ class FirstFailure {
     }
     failed_ = true;
   }
+  // A journal write failure stops the sweep too, but is no error of a map task: the report is
+  // still written (incomplete) and the message names only the journal.
+  void record_journal(const JournalError& e) {
+    std::lock_guard lock(mutex_);
+    if (journal_error_.empty()) journal_error_ = e.what();
+    failed_ = true;
+  }
+  std::string journal_error() {
+    std::lock_guard lock(mutex_);
+    return journal_error_;
+  }
   bool failed() const { return failed_.load(std::memory_order_relaxed); }
   void rethrow() const {
     if (!message_) return;
@@ -207,6 +219,7 @@ class FirstFailure {
   std::mutex mutex_;
   std::optional<std::string> message_;
   bool is_input_ = false;
+  std::string journal_error_;
   std::atomic<bool> failed_{false};
 };
 
@@ -237,10 +250,20 @@ bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
     const std::int64_t task = todo[i];
     try {
       Worker& w = workers.local();  // may start an isolation worker, which may fail
+      const std::vector<std::size_t> planners = pending_planners(state.results, task);
       const std::string lines =
           isolated ? run_task_isolated(state, *w.process, launch.hard_limit_s, task)
                    : run_task_in_process(state, w.workspace, task);
-      if (journal.enabled() && !lines.empty()) journal.write(lines);
+      if (journal.enabled() && !lines.empty()) {
+        try {
+          journal.write(lines);
+        } catch (const JournalError& e) {
+          // The task's runs are not in the journal: not done, so the report is incomplete and a
+          // resume runs them again.
+          for (const std::size_t p : planners) state.results.run(task, p).done = false;
+          failure.record_journal(e);
+        }
+      }
     } catch (const std::exception& e) {
       failure.record(state.results.plan, task, e);
     }
@@ -276,7 +299,17 @@ SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
   res.interrupted = run_tasks(state, todo, options, journal, failure);
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.executed_runs = state.executed.load();
+  res.journal_error = failure.journal_error();
+  if (res.journal_error.empty()) {
+    try {
+      journal.finish();
+    } catch (const JournalError& e) {
+      res.journal_error = e.what();
+    }
+  }
   update_completeness(res);
+  // Runs whose records may not have reached the disk: the sweep's record is not complete.
+  if (!res.journal_error.empty()) res.complete = false;
   failure.rethrow();
   return res;
 }

@@ -50,6 +50,10 @@ struct SweepResults {
   std::int64_t executed_runs = 0;
   int shard_index = 0;
   int shard_count = 1;
+  // Set when a journal write failed: the sweep stopped taking tasks, the runs the journal lost
+  // are not counted as done and `complete` is false (the message names the journal and the OS
+  // error).
+  std::string journal_error;
 
   int maps_of(const SweepCell& cell, std::size_t planner) const {
     return scoped_maps[static_cast<std::size_t>(cell.index) * labels.size() + planner];

@@ -45,6 +45,8 @@ import agvreport  # noqa: E402
 from agvreport import Moments, ReportError, moments_from_summary  # noqa: E402
 
 DASH = "\u2013"
+# The per-run record format agvbench writes (engine/run_record.h kJournalVersion).
+JOURNAL_VERSION = 1
 HOLDS, FAILS, NA = "holds", "does not hold", "not comparable"
 DEFAULT_CLAIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "claims.json")
 
@@ -97,6 +99,11 @@ class Source:
                     for key in ("planner", "cell", "map_index", "outcome", "metrics"):
                         if not isinstance(r, dict) or key not in r:
                             raise ReportError(f"line {n}: missing key '{key}' (not an agvbench --runs-out record)")
+                    tool, version = r.get("tool"), r.get("journal_version")
+                    if tool != "agvbench" or version != JOURNAL_VERSION:
+                        raise ReportError(f"line {n}: a record of tool {tool!r}, journal_version {version!r}; "
+                                          f"this script reads tool 'agvbench', journal_version {JOURNAL_VERSION} "
+                                          "(reports/SCHEMA.md, Per-run records)")
                     # Keep only what the comparisons read (paper sweeps have many records).
                     records.append({"planner": r["planner"], "cell": r["cell"], "map_index": r["map_index"],
                                     "outcome": r["outcome"], "metrics": r["metrics"],

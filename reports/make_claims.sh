@@ -25,6 +25,9 @@ for p in 000 002 003 004; do
       echo "make_claims.sh: no agvbench binary at $bin (build it first)" >&2
       exit 2
     fi
+    # A fresh sweep: agvbench refuses to truncate a journal holding records, so the previous
+    # one (this script's own output) is removed first.
+    rm -f "$runs"
     "$bin" run "$cfg" --out "$rep" --runs-out "$runs"
   fi
   inputs+=("$rep" "$runs")

@@ -33,7 +33,9 @@ assert abs(sum(r.count(\"@\") for r in rows) / 400 - rec[\"map\"][\"obstacle_fra
 assert mine[\"runs\"][0][\"metrics\"][\"path_length\"] == rec[\"metrics\"][\"path_length\"]
 assert other[\"map\"][\"rows\"] != rows, \"room_size did not reach the generator\"
 '"
-check "validate the quick config" "$bin" validate "$src/configs/quick.json"
+# From the checkout root, as the README runs it: the config's report folder (reports/out/, which
+# ships with the checkout) must exist, as `run` would require.
+check "validate the quick config" sh -c "cd '$src' && '$bin' validate configs/quick.json"
 check "plan on a generated grid draws S, G and a path" sh -c "'$bin' plan --planner astar --planner dijkstra --size 24 --density 0.2 --seed 3 | grep -q 'S' && '$bin' plan --size 24 --density 0.2 | grep -q 'astar: success'"
 check "plan --json-out writes a path document" sh -c "'$bin' plan --size 16 --density 0.1 --json-out p.json --no-ascii >/dev/null && $py -c 'import json; d=json.load(open(\"p.json\")); assert d[\"runs\"][0][\"outcome\"]==\"success\" and len(d[\"runs\"][0][\"path\"])>1'"
 check "plan on a MovingAI map" sh -c "'$bin' plan --map '$maps/arena2.map' --start 99,159 --goal 101,162 --param corner_rule=no_corner_cut --no-ascii | grep -q 'path_length = 3.828'"

@@ -130,6 +130,7 @@ TEST(Sweep, AtomicWriteLeavesNoTemporaryFile) {
   const fs::path dir =
       fs::temp_directory_path() / ("agv_atomic_test_" + std::to_string(::getpid()));
   fs::remove_all(dir);
+  fs::create_directories(dir / "sub");
   const std::string path = (dir / "sub" / "r.json").string();
   write_json_atomic(json{{"a", 1}}, path);
   write_json_atomic(json{{"a", 2}}, path);

@@ -130,6 +130,7 @@ def simulate(spec):
                         prng = random.Random(f"{spec['seed']}/{cell}/{m}/{p['label']}")
                         ok = prng.random() < mod.get("success", 1.0)
                         rec = {
+                            "tool": "agvbench", "journal_version": 1,
                             "task_id": f"synthetic/{cell}/{m}/{p['label']}",
                             "config_hash": "0000000000000000", "planner": p["label"],
                             "planner_name": p["name"], "generator": gen, "size": [w, h],

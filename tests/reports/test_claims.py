@@ -206,6 +206,11 @@ bad("missing file", [os.path.join(work, "nope.json")], "no such file")
 bad("claims file", [p1], "missing key", claims=badclaims)
 bad("runs first", [r1], "must follow the report")
 bad("bad runs", [p1, badruns], "missing key 'cell'")
+foreign = os.path.join(work, "foreign.jsonl")
+with open(foreign, "w") as f:
+    f.write('{"tool": "agvbench", "journal_version": 0, "planner": "astar", "cell": "c", '
+            '"map_index": 0, "outcome": "success", "metrics": {}}\n')
+bad("foreign journal version", [p1, foreign], "journal_version 0; this script reads")
 
 print(f"{passes} passed, {failures} failed")
 sys.exit(1 if failures else 0)

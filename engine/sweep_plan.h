@@ -36,8 +36,29 @@ int scoped_maps(const PlannerEntry& planner, const SweepCell& cell, int maps_per
 // The runs a sweep schedules: over planners and cells, their scoped map counts.
 std::int64_t scheduled_runs(const SweepConfig& config, const SweepPlan& plan);
 
-// Short text of a density that round-trips the configured value ("0.2", "0.35").
+// What a sweep holds in memory while it runs (engine/sweep_runner.h SweepResults): a map slot
+// and a to-do entry per map task, a run slot per map task and planner (scheduled or not), and
+// the phase times and extra metrics each run leaves in its slot.
+struct SweepSize {
+  std::int64_t map_tasks = 0;
+  std::int64_t run_slots = 0;
+  std::int64_t scheduled_runs = 0;
+  double bytes = 0.0;  // estimate (a double: a hostile config's product must not overflow)
+};
+SweepSize sweep_size(const SweepConfig& config, const SweepPlan& plan);
+// Physical memory, or the cgroup's memory.max when that is lower; 0 when neither is known.
+double usable_memory_bytes();
+// InputError naming maps_per_cell when the estimate exceeds half of usable_memory_bytes() (the
+// rest is headroom: the maps, planner scratch and the report being built).
+void check_sweep_size(const SweepConfig& config, const SweepPlan& plan);
+// "1.5 GiB"
+std::string bytes_text(double bytes);
+
+// Short text of a density ("0.2", "0.35"): ten significant digits, so two densities closer
+// than that share one text, and the config refuses them (they would share one cell key).
 std::string density_text(double density);
+// "uniform/64x64/0.2": names a cell in records and seeds its maps.
+std::string cell_key(const std::string& generator, GridSize size, double density);
 
 // The random stream of a cell's map `map_index` and of one planner's run on it.
 Rng map_rng(std::uint64_t seed, const SweepCell& cell, int map_index);

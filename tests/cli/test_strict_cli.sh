@@ -72,6 +72,9 @@ refuse "plan --clearance inf" 'clearance.*"inf" is not a finite number' "$bin" p
 refuse "scen --tolerance nan (was 0 mismatches)" 'tolerance.*"nan" is not a finite number' \
   "$bin" scen m.map m.scen --tolerance nan
 refuse "scen --tolerance -1" 'tolerance.*-1 is outside \[0, 1\]' "$bin" scen m.map m.scen --tolerance -1
+refuse "--param integer past 2^63" 'max_iterations: 18446744073709551615 is outside' \
+  "$bin" plan --planner rrt --param max_iterations=18446744073709551615
+refuse "--param nan" 'diagonal_cost: expected a number, got "nan"' "$bin" plan --param diagonal_cost=nan
 refuse "worker --memory-mb -5" 'memory-mb.*-5 is outside' "$bin" worker --memory-mb -5
 
 # What is accepted still works, and a leading zero is decimal, not octal.

@@ -161,8 +161,9 @@ TEST(ConfigValidation, AbsentAndEmptyObjectsGiveOneDefault) {
   EXPECT_EQ(config_as_run(parse_config(j)), absent);
 }
 
-// Class 5/6: integers past 2^63 - 1 are refused, not wrapped negative.
-TEST(ConfigValidation, HugeIntegersAreRefusedNotWrapped) {
+// Integers past 2^63 - 1 are refused as written (nlohmann holds them unsigned; read as long long
+// they would wrap negative, which only the ranges' lower bounds caught).
+TEST(ConfigValidation, HugeIntegersAreRefusedAsWritten) {
   json j = kSmall;
   j["seed"] = json::parse("18446744073709551615");
   EXPECT_NE(parse_error(j).find("seed: 18446744073709551615 is outside"), std::string::npos)

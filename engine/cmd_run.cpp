@@ -163,8 +163,7 @@ int command_validate(const std::string& config_path) {
   const SweepConfig config = load_config(config_path);
   const SweepPlan plan = plan_sweep(config);
   std::printf("%s: ok: %s, about %s held in memory\n", config_path.c_str(),
-              run_count_text(config, plan).c_str(),
-              bytes_text(sweep_size(config, plan).bytes).c_str());
+              run_count_text(config, plan).c_str(), bytes_text(sweep_size(config).bytes).c_str());
   return 0;
 }
 

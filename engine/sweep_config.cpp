@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -129,6 +130,7 @@ const json& require_array(ObjectReader& r, const std::string& key) {
 
 std::vector<GridSize> parse_sizes(ObjectReader& r) {
   std::vector<GridSize> sizes;
+  std::map<GridSize, std::size_t> first_index;
   const json& arr = require_array(r, "sizes");
   for (std::size_t i = 0; i < arr.size(); ++i) {
     const std::string f = r.field("sizes") + "[" + std::to_string(i) + "]";
@@ -144,11 +146,11 @@ std::vector<GridSize> parse_sizes(ObjectReader& r) {
       throw InputError(f + ": expected a side length or [width, height]");
     }
     // Two equal sizes would be two cells with one key (a resume would then run both twice).
-    for (std::size_t k = 0; k < i; ++k)
-      if (sizes[k] == sizes.back())
-        throw InputError(f + ": " + std::to_string(sizes[k].width) + "x" +
-                         std::to_string(sizes[k].height) + " is also " + r.field("sizes") + "[" +
-                         std::to_string(k) + "] (give each size once)");
+    const auto [it, added] = first_index.emplace(sizes.back(), i);
+    if (!added)
+      throw InputError(f + ": " + std::to_string(sizes.back().width) + "x" +
+                       std::to_string(sizes.back().height) + " is also " + r.field("sizes") + "[" +
+                       std::to_string(it->second) + "] (give each size once)");
   }
   return sizes;
 }
@@ -253,26 +255,26 @@ void resolve_generators(std::vector<GeneratorEntry>& generators,
 
 // Every cell's map spec through make_map's own checks (generators/map_generators.h), so what the
 // first map of a cell would refuse (a min_distance beyond a small size's diagonal) is refused at
-// load, naming the field and the size, before any file is opened.
+// load, naming the field and the size, before any file is opened. The checks depend on a cell's
+// density only through its range, which every density of the sweep has passed, so one density
+// stands for all.
 void check_cells(const SweepConfig& c) {
   for (std::size_t g = 0; g < c.generators.size(); ++g) {
     for (std::size_t k = 0; k < c.sizes.size(); ++k) {
-      for (const double density : c.densities) {
-        MapSpec spec = c.map;
-        spec.generator = c.generators[g].name;
-        spec.params = c.generators[g].resolved;
-        spec.width = c.sizes[k].width;
-        spec.height = c.sizes[k].height;
-        spec.density = density;
-        try {
-          check_map_spec(spec);
-        } catch (const std::invalid_argument& e) {
-          const std::string what = e.what();
-          const std::string object =
-              what.rfind("params.", 0) == 0 ? "generators[" + std::to_string(g) + "]." : "map.";
-          throw InputError(object + what + ", for sizes[" + std::to_string(k) + "] (" +
-                           std::to_string(spec.width) + "x" + std::to_string(spec.height) + ")");
-        }
+      MapSpec spec = c.map;
+      spec.generator = c.generators[g].name;
+      spec.params = c.generators[g].resolved;
+      spec.width = c.sizes[k].width;
+      spec.height = c.sizes[k].height;
+      spec.density = c.densities.front();
+      try {
+        check_map_spec(spec);
+      } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        const std::string object =
+            what.rfind("params.", 0) == 0 ? "generators[" + std::to_string(g) + "]." : "map.";
+        throw InputError(object + what + ", for sizes[" + std::to_string(k) + "] (" +
+                         std::to_string(spec.width) + "x" + std::to_string(spec.height) + ")");
       }
     }
   }
@@ -280,19 +282,20 @@ void check_cells(const SweepConfig& c) {
 
 std::vector<double> parse_densities(ObjectReader& r) {
   std::vector<double> densities;
+  std::map<std::string, std::size_t> first_index;  // by density_text
   const json& arr = require_array(r, "densities");
   for (std::size_t i = 0; i < arr.size(); ++i) {
     const std::string f = r.field("densities") + "[" + std::to_string(i) + "]";
     densities.push_back(ObjectReader::check_number(arr[i], f, kDensityRange));
     // A density names its cells by density_text (engine/sweep_plan.h): two that print alike
     // would be two cells with one key.
-    for (std::size_t k = 0; k < i; ++k)
-      if (density_text(densities[k]) == density_text(densities.back()))
-        throw InputError(f + ": " + arr[i].dump() + " names the same cells as " +
-                         r.field("densities") + "[" + std::to_string(k) + "] (" + arr[k].dump() +
-                         "): densities are told apart by their first 10 "
-                         "significant digits (\"" +
-                         density_text(densities.back()) + "\")");
+    const std::string text = density_text(densities.back());
+    const auto [it, added] = first_index.emplace(text, i);
+    if (!added)
+      throw InputError(
+          f + ": " + arr[i].dump() + " names the same cells as " + r.field("densities") + "[" +
+          std::to_string(it->second) + "] (" + arr[it->second].dump() +
+          "): densities are told apart by their first 10 significant digits (\"" + text + "\")");
   }
   return densities;
 }
@@ -401,7 +404,6 @@ SweepConfig parse_config(const json& j) {
   c.collision = parse_collision(optional_object(r, "collision"));
   c.map.solvable_rule = c.collision.corner_rule;
   parse_map_options(optional_object(r, "map"), c.map);
-  check_cells(c);
   if (!r.has("planners")) throw InputError("planners: missing (list at least one planner)");
   c.planners = parse_planners(r, c);
   c.baseline = r.string("baseline", "");
@@ -433,7 +435,9 @@ SweepConfig parse_config(const json& j) {
   c.runs_path = r.string("runs", c.runs_path);
   if (c.report_path.empty()) throw InputError("report: must not be empty");
   r.finish();
-  check_sweep_size(c, plan_sweep(c));
+  // The size first: a config too large to hold may be too large to walk cell by cell.
+  check_sweep_size(c);
+  check_cells(c);
   return c;
 }
 

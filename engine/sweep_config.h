@@ -38,7 +38,7 @@ inline constexpr NumberRange kTimeLimitRange{1e-3, 86400.0};
 struct GridSize {
   int width = 0;
   int height = 0;
-  bool operator==(const GridSize&) const = default;
+  auto operator<=>(const GridSize&) const = default;
 };
 
 // Where a planner runs when not on every map of the sweep ("only" in the config): a planner

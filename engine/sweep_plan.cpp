@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <string>
 
 #include "engine/sweep_runner.h"
@@ -95,6 +96,8 @@ namespace {
 // MapSlot and the to-do entry 24); the rest, about 270, is rounded up here for planners with
 // more phases or extra metrics.
 constexpr double kRunHeapBytes = 320.0;
+// A SweepCell with its key and the map spec's parameters on the heap.
+constexpr double kCellBytes = sizeof(SweepCell) + 256.0;
 // A map task's MapSlot and its entry in the to-do list.
 constexpr double kMapTaskBytes = sizeof(MapSlot) + sizeof(std::int64_t);
 // Above this share of the memory the sweep is refused: the rest is for the maps, the planners'
@@ -103,14 +106,29 @@ constexpr double kMemoryShare = 0.5;
 
 }  // namespace
 
-SweepSize sweep_size(const SweepConfig& config, const SweepPlan& plan) {
+SweepSize sweep_size(const SweepConfig& config) {
   SweepSize size;
-  size.map_tasks = plan.map_tasks();
-  size.run_slots = size.map_tasks * static_cast<std::int64_t>(config.planners.size());
-  size.scheduled_runs = scheduled_runs(config, plan);
-  size.bytes = static_cast<double>(size.map_tasks) * kMapTaskBytes +
-               static_cast<double>(size.run_slots) * sizeof(RunSlot) +
-               static_cast<double>(size.scheduled_runs) * kRunHeapBytes;
+  size.cells = static_cast<double>(config.generators.size()) *
+               static_cast<double>(config.sizes.size()) *
+               static_cast<double>(config.densities.size());
+  size.map_tasks = size.cells * config.maps_per_cell;
+  size.run_slots = size.map_tasks * static_cast<double>(config.planners.size());
+  // A scoped planner runs on the cells its lists leave (each a subset of the sweep's axis, so
+  // their product) and on the first maps of each, as scoped_maps counts them.
+  const auto listed = [](const auto& only, std::size_t all) {
+    return only.empty() ? static_cast<double>(all)
+                        : static_cast<double>(std::set(only.begin(), only.end()).size());
+  };
+  for (const auto& p : config.planners) {
+    const int maps = p.only.maps_per_cell > 0 ? std::min(p.only.maps_per_cell, config.maps_per_cell)
+                                              : config.maps_per_cell;
+    size.scheduled_runs += listed(p.only.generators, config.generators.size()) *
+                           listed(p.only.sizes, config.sizes.size()) *
+                           listed(p.only.densities, config.densities.size()) * maps;
+  }
+  size.bytes = size.cells * kCellBytes + size.map_tasks * kMapTaskBytes +
+               size.run_slots * static_cast<double>(sizeof(RunSlot)) +
+               size.scheduled_runs * kRunHeapBytes;
   return size;
 }
 
@@ -137,15 +155,17 @@ std::string bytes_text(double bytes) {
   return buf;
 }
 
-void check_sweep_size(const SweepConfig& config, const SweepPlan& plan) {
-  const SweepSize size = sweep_size(config, plan);
+void check_sweep_size(const SweepConfig& config) {
+  const SweepSize size = sweep_size(config);
   const double memory = usable_memory_bytes();
   if (memory <= 0.0 || size.bytes <= kMemoryShare * memory) return;
-  throw InputError("maps_per_cell: " + std::to_string(config.maps_per_cell) + " maps in each of " +
-                   std::to_string(plan.cells.size()) + " cells for " +
-                   std::to_string(config.planners.size()) + " planners make " +
-                   std::to_string(size.run_slots) + " run slots, about " + bytes_text(size.bytes) +
-                   " held while the sweep runs; this machine has " + bytes_text(memory) +
+  char counts[160];
+  std::snprintf(counts, sizeof counts,
+                " maps in each of %.0f cells for %zu planners make %.4g run slots, about ",
+                size.cells, config.planners.size(), size.run_slots);
+  throw InputError("maps_per_cell: " + std::to_string(config.maps_per_cell) + counts +
+                   bytes_text(size.bytes) + " held while the sweep runs; this machine has " +
+                   bytes_text(memory) +
                    " and a sweep may use half of it: lower maps_per_cell (or "
                    "the number of sizes, densities, generators or planners)");
 }

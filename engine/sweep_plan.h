@@ -36,21 +36,23 @@ int scoped_maps(const PlannerEntry& planner, const SweepCell& cell, int maps_per
 // The runs a sweep schedules: over planners and cells, their scoped map counts.
 std::int64_t scheduled_runs(const SweepConfig& config, const SweepPlan& plan);
 
-// What a sweep holds in memory while it runs (engine/sweep_runner.h SweepResults): a map slot
-// and a to-do entry per map task, a run slot per map task and planner (scheduled or not), and
-// the phase times and extra metrics each run leaves in its slot.
+// What a sweep holds in memory while it runs (engine/sweep_runner.h SweepResults): its cells, a
+// map slot and a to-do entry per map task, a run slot per map task and planner (scheduled or
+// not), and the phase times and extra metrics each run leaves in its slot. Counted from the
+// config alone, without expanding the plan, so a config too large to plan is refused as well.
 struct SweepSize {
-  std::int64_t map_tasks = 0;
-  std::int64_t run_slots = 0;
-  std::int64_t scheduled_runs = 0;
-  double bytes = 0.0;  // estimate (a double: a hostile config's product must not overflow)
+  double cells = 0;  // doubles: a hostile config's products must not overflow
+  double map_tasks = 0;
+  double run_slots = 0;
+  double scheduled_runs = 0;
+  double bytes = 0;  // estimate
 };
-SweepSize sweep_size(const SweepConfig& config, const SweepPlan& plan);
+SweepSize sweep_size(const SweepConfig& config);
 // Physical memory, or the cgroup's memory.max when that is lower; 0 when neither is known.
 double usable_memory_bytes();
 // InputError naming maps_per_cell when the estimate exceeds half of usable_memory_bytes() (the
 // rest is headroom: the maps, planner scratch and the report being built).
-void check_sweep_size(const SweepConfig& config, const SweepPlan& plan);
+void check_sweep_size(const SweepConfig& config);
 // "1.5 GiB"
 std::string bytes_text(double bytes);
 

@@ -88,10 +88,25 @@ TEST(ConfigValidation, SweepTooLargeForMemoryIsRefused) {
 
   // The estimate grows with what the engine holds: a slot per map task and planner.
   const SweepConfig small = parse_config(kSmall);
-  const SweepSize size = sweep_size(small, plan_sweep(small));
+  const SweepSize size = sweep_size(small);
   EXPECT_EQ(size.map_tasks, 4);
   EXPECT_EQ(size.run_slots, 4);
+  EXPECT_EQ(size.scheduled_runs, 4);
   EXPECT_GE(size.bytes, 4.0 * (sizeof(RunSlot) + sizeof(MapSlot)));
+  // Scoped planners: counted as scheduled_runs counts them on the expanded plan.
+  json scoped = kSmall;
+  scoped["densities"] = {0.1, 0.2, 0.3};
+  scoped["maps_per_cell"] = 5;
+  scoped["planners"] = {
+      "astar",
+      {{"name", "rrt"},
+       {"only", {{"sizes", {16}}, {"densities", {0.1, 0.3}}, {"maps_per_cell", 2}}}},
+      {{"name", "dijkstra"}, {"only", {{"generators", {"uniform", "uniform"}}}}}};
+  const SweepConfig scoped_config = parse_config(scoped);
+  const SweepSize scoped_size = sweep_size(scoped_config);
+  EXPECT_EQ(scoped_size.run_slots, 2 * 3 * 5 * 3);
+  EXPECT_EQ(scoped_size.scheduled_runs,
+            static_cast<double>(scheduled_runs(scoped_config, plan_sweep(scoped_config))));
   // The shipped configs fit.
   for (const char* name : {"default", "quick", "paper-000", "paper-002", "paper-003", "paper-004"})
     EXPECT_NO_THROW(load_config(std::string(AGV_SOURCE_DIR) + "/configs/" + name + ".json"))

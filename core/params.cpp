@@ -1,6 +1,7 @@
 #include "core/params.h"
 
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 
 namespace agv {
@@ -102,6 +103,9 @@ json check_value(const ParamSpec& s, const json& v, const std::string& field) {
         }
         throw InputError(field + ": expected an integer, got " + v.dump());
       }
+      // Above 2^63 - 1 nlohmann holds an unsigned value that get<long long> would wrap negative.
+      if (v.is_number_unsigned() && static_cast<double>(v.get<std::uint64_t>()) > s.max)
+        throw InputError(field + ": " + v.dump() + " is outside " + range_text(s));
       const auto x = v.get<long long>();
       if (static_cast<double>(x) < s.min || static_cast<double>(x) > s.max)
         throw InputError(field + ": " + v.dump() + " is outside " + range_text(s));

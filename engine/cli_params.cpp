@@ -1,5 +1,7 @@
 #include "engine/cli_params.h"
 
+#include "engine/cli_numbers.h"
+
 namespace agv {
 
 namespace {
@@ -61,13 +63,12 @@ nlohmann::json cli_generator_params(const GeneratorInfo& info,
 }
 
 Cell parse_cell(const std::string& text, const std::string& what) {
-  int x = 0, y = 0;
-  char comma = 0;
-  int used = 0;
-  if (std::sscanf(text.c_str(), "%d %c %d%n", &x, &comma, &y, &used) != 3 || comma != ',' ||
-      used != static_cast<int>(text.size()))
-    throw InputError(what + ": expected x,y, got \"" + text + "\"");
-  return {x, y};
+  const auto comma = text.find(',');
+  if (comma == std::string::npos) throw InputError(what + ": expected x,y, got \"" + text + "\"");
+  // Beyond the largest grid a cell is outside every map; the grid check then says so.
+  constexpr IntRange kCoordinate{0, kMaxMapSide};
+  return {static_cast<int>(parse_cli_integer(text.substr(0, comma), what + " (x)", kCoordinate)),
+          static_cast<int>(parse_cli_integer(text.substr(comma + 1), what + " (y)", kCoordinate))};
 }
 
 }  // namespace agv

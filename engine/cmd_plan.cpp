@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "algos/registry.h"
+#include "engine/cli_numbers.h"
 #include "engine/cli_params.h"
 #include "engine/commands.h"
 #include "engine/json_text.h"
@@ -23,15 +24,14 @@ namespace agv {
 namespace {
 
 GridSize parse_size(const std::string& text) {
-  int w = 0, h = 0;
-  char x = 0;
-  int used = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%n", &w, &x, &h, &used) == 3 && (x == 'x' || x == 'X') &&
-      used == static_cast<int>(text.size()))
-    return {w, h};
-  if (std::sscanf(text.c_str(), "%d%n", &w, &used) == 1 && used == static_cast<int>(text.size()))
-    return {w, w};
-  throw InputError("--size: expected N or WxH, got \"" + text + "\"");
+  const auto x = text.find_first_of("xX");
+  if (x == std::string::npos) {
+    const auto side = static_cast<int>(parse_cli_integer(text, "--size", kMapSideRange));
+    return {side, side};
+  }
+  return {
+      static_cast<int>(parse_cli_integer(text.substr(0, x), "--size (width)", kMapSideRange)),
+      static_cast<int>(parse_cli_integer(text.substr(x + 1), "--size (height)", kMapSideRange))};
 }
 
 void check_endpoint(const Grid& grid, Cell c, const std::string& what) {
@@ -153,8 +153,7 @@ int command_plan(const PlanCommand& cmd) {
     cell.generator = cmd.generator;
     cell.size = size;
     cell.density = cmd.density;
-    cell.key = cmd.generator + "/" + std::to_string(size.width) + "x" +
-               std::to_string(size.height) + "/" + density_text(cmd.density);
+    cell.key = cell_key(cmd.generator, size, cmd.density);
     cell.spec.generator = cmd.generator;
     cell.spec.params =
         resolve_generator_params(generator, cli_generator_params(generator, cmd.gen_params),

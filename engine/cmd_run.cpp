@@ -1,13 +1,16 @@
 // `agvbench run`, `validate` and `list`.
 #include <signal.h>
+#include <tbb/info.h>
 
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <tuple>
 
 #include "algos/registry.h"
+#include "engine/cli_numbers.h"
 #include "engine/commands.h"
 #include "engine/journal.h"
 #include "engine/output_paths.h"
@@ -36,11 +39,15 @@ void install_stop_handlers() {
 }
 
 std::pair<int, int> parse_shard(const std::string& text) {
-  int i = 0, n = 0, used = 0;
-  if (std::sscanf(text.c_str(), "%d/%d%n", &i, &n, &used) != 2 ||
-      used != static_cast<int>(text.size()) || n < 1 || i < 0 || i >= n)
+  const auto slash = text.find('/');
+  if (slash == std::string::npos)
     throw InputError("--shard: expected i/N with 0 <= i < N, got \"" + text + "\"");
-  return {i, n};
+  constexpr IntRange kShardRange{0, std::numeric_limits<int>::max()};
+  const auto i = parse_cli_integer(text.substr(0, slash), "--shard (i of i/N)", kShardRange);
+  const auto n =
+      parse_cli_integer(text.substr(slash + 1), "--shard (N of i/N)", {1, kShardRange.hi});
+  if (i >= n) throw InputError("--shard: expected i/N with 0 <= i < N, got \"" + text + "\"");
+  return {static_cast<int>(i), static_cast<int>(n)};
 }
 
 // "16 cells x 100 maps x 13 planners = 20800 runs", or, with scoped planners, what they leave.
@@ -96,10 +103,25 @@ std::string locate_config(const std::string& path) {
   return path;
 }
 
+namespace {
+
+// oneTBB runs a sweep on at most its default concurrency (the CPUs this process may use), however
+// many threads are asked for; the report and summary give the number that ran.
+int threads_that_run(int asked) {
+  const int available = tbb::info::default_concurrency();
+  if (asked <= available) return asked;
+  std::fprintf(stderr, "agvbench: %d threads asked for; %d run (the CPUs this process may use)\n",
+               asked, available);
+  return available;
+}
+
+}  // namespace
+
 int command_run(const RunCommand& cmd) {
   const std::string config_path = locate_config(cmd.config);
   SweepConfig config = load_config(config_path);
   if (cmd.threads >= 0) config.threads = cmd.threads;
+  config.threads = threads_that_run(config.threads);
   if (!cmd.out.empty()) config.report_path = cmd.out;
   if (!cmd.runs_out.empty()) config.runs_path = cmd.runs_out;
 
@@ -193,7 +215,8 @@ int command_validate(const std::string& config_path) {
       {{"config file", config_path}},
       {{"report", config.report_path}, {"runs", config.runs_path, OutputKind::new_journal}});
   const SweepPlan plan = plan_sweep(config);
-  std::printf("%s: ok: %s\n", config_path.c_str(), run_count_text(config, plan).c_str());
+  std::printf("%s: ok: %s, about %s held in memory\n", config_path.c_str(),
+              run_count_text(config, plan).c_str(), bytes_text(sweep_size(config).bytes).c_str());
   return 0;
 }
 

@@ -4,8 +4,34 @@
 #include <exception>
 
 #include "core/input_error.h"
+#include "engine/cli_numbers.h"
 #include "engine/commands.h"
 #include "engine/isolated_worker.h"
+
+namespace {
+
+// Every numeric option goes through engine/cli_numbers.h: the whole argument one number in the
+// range (the config's where it has the same setting), canonicalised before CLI11 converts it
+// (transform, not check: CLI11 hands a check a copy of the text).
+CLI::Validator integer_in(agv::IntRange range) {
+  return CLI::Validator(
+      [range](std::string& text) { return agv::cli_integer_error(text, range); },
+      "INT in [" + std::to_string(range.lo) + ", " + std::to_string(range.hi) + "]");
+}
+CLI::Validator number_in(agv::NumberRange range) {
+  return CLI::Validator([range](std::string& text) { return agv::cli_number_error(text, range); },
+                        "NUMBER");
+}
+
+// --isolate-timeout: above the longest per-run limit a config can set, twice over (the default
+// is 2 x time_limit_s + 1 s).
+constexpr agv::NumberRange kIsolateTimeoutRange{agv::kTimeLimitRange.lo,
+                                                2 * agv::kTimeLimitRange.hi + 1};
+constexpr agv::IntRange kIsolateMemoryRange{64, 1LL << 40};
+// scen --tolerance: relative and absolute; 1 already accepts any length up to twice the optimum.
+constexpr agv::NumberRange kToleranceRange{0.0, 1.0};
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"agvbench: a parallel benchmark engine for AGV grid path planners"};
@@ -15,7 +41,7 @@ int main(int argc, char** argv) {
   auto* run_cmd = app.add_subcommand("run", "run a sweep and write its JSON report");
   run_cmd->add_option("config", run.config, "sweep config (default: configs/default.json)");
   run_cmd->add_option("--threads", run.threads, "worker threads (0 = all)")
-      ->check(CLI::Range(0, 4096));
+      ->transform(integer_in(agv::kThreadsRange));
   run_cmd->add_option("--out", run.out, "report path (overrides the config)");
   run_cmd->add_option("--runs-out", run.runs_out, "JSON Lines file of per-run records");
   run_cmd->add_option("--resume", run.resume,
@@ -25,10 +51,10 @@ int main(int argc, char** argv) {
   run_cmd
       ->add_option("--isolate-timeout", run.isolate_timeout_s,
                    "hard wall-clock limit per run in seconds (default 2x time_limit_s + 1)")
-      ->check(CLI::PositiveNumber);
+      ->transform(number_in(kIsolateTimeoutRange));
   run_cmd
       ->add_option("--isolate-memory", run.isolate_memory_mb, "address-space cap per worker, MiB")
-      ->check(CLI::Range(64LL, 1LL << 40));
+      ->transform(integer_in(kIsolateMemoryRange));
   run_cmd->add_flag("--quiet", run.quiet, "no progress meter and no summary table");
 
   std::string merge_config, merge_out;
@@ -41,7 +67,8 @@ int main(int argc, char** argv) {
 
   long long worker_memory = 0;
   auto* worker_cmd = app.add_subcommand("worker", "");  // internal: an --isolate worker process
-  worker_cmd->add_option("--memory-mb", worker_memory);
+  worker_cmd->add_option("--memory-mb", worker_memory)
+      ->transform(integer_in({0, kIsolateMemoryRange.hi}));
   worker_cmd->group("");
 
   std::string validate_path;
@@ -63,17 +90,20 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("--gen-param", plan.gen_params,
                        "KEY=VALUE shape parameter of the generator (repeatable)");
   plan_cmd->add_option("--size", plan.size, "N or WxH");
-  plan_cmd->add_option("--density", plan.density, "obstacle density");
+  plan_cmd->add_option("--density", plan.density, "obstacle density")
+      ->transform(number_in(agv::kDensityRange));
   plan_cmd->add_option("--endpoints", plan.endpoints, "corners or random");
-  plan_cmd->add_option("--seed", plan.seed, "sweep seed");
-  plan_cmd->add_option("--map-index", plan.map_index, "map index within its sweep cell");
+  plan_cmd->add_option("--seed", plan.seed, "sweep seed")->transform(integer_in(agv::kSeedRange));
+  plan_cmd->add_option("--map-index", plan.map_index, "map index within its sweep cell")
+      ->transform(integer_in(agv::kMapIndexRange));
   plan_cmd->add_option("--start", plan.start, "start cell x,y (overrides the endpoints)");
   plan_cmd->add_option("--goal", plan.goal, "goal cell x,y (overrides the endpoints)");
   plan_cmd->add_option("--corner-rule", plan.corner_rule,
                        "collision model: allow, no_squeeze or no_corner_cut (default)");
-  plan_cmd->add_option(
-      "--clearance", plan.clearance,
-      "collision model: cells from obstacle centres beyond half a cell (default 0)");
+  plan_cmd
+      ->add_option("--clearance", plan.clearance,
+                   "collision model: cells from obstacle centres beyond half a cell (default 0)")
+      ->transform(number_in(agv::kFiniteRange));
   plan_cmd->add_flag("--json", plan.json, "print the result as JSON instead of text");
   plan_cmd->add_option("--json-out", plan.json_out, "also write the result JSON to this file");
   plan_cmd->add_flag("!--no-ascii", plan.ascii, "do not draw the map");
@@ -84,7 +114,10 @@ int main(int argc, char** argv) {
   scen_cmd->add_option("scen", scen.scen_file, "MovingAI .scen file")->required();
   scen_cmd->add_option("--planner", scen.planner, "planner name (default astar)");
   scen_cmd->add_option("--param", scen.params, "KEY=VALUE parameter (repeatable)");
-  scen_cmd->add_option("--tolerance", scen.tolerance, "relative tolerance on optimal lengths");
+  scen_cmd
+      ->add_option("--tolerance", scen.tolerance,
+                   "relative (and absolute) tolerance on optimal lengths, in [0, 1]")
+      ->transform(number_in(kToleranceRange));
   scen_cmd->add_flag("--json", scen.json, "print the summary as JSON");
 
   try {

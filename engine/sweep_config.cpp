@@ -1,12 +1,16 @@
 #include "engine/sweep_config.h"
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/rng.h"
 #include "core/text_file.h"
+#include "engine/sweep_plan.h"
 
 namespace agv {
 
@@ -34,6 +38,12 @@ class ObjectReader {
   double number(const std::string& key, double def, double lo, double hi) {
     if (!has(key)) return def;
     return check_number(j_.at(key), field(key), lo, hi);
+  }
+  double number(const std::string& key, double def, NumberRange range) {
+    return number(key, def, range.lo, range.hi);
+  }
+  long long integer(const std::string& key, long long def, IntRange range) {
+    return integer(key, def, range.lo, range.hi);
   }
   long long integer(const std::string& key, long long def, long long lo, long long hi) {
     if (!has(key)) return def;
@@ -78,9 +88,19 @@ class ObjectReader {
     }
     return x;
   }
+  static double check_number(const json& v, const std::string& field, NumberRange range) {
+    return check_number(v, field, range.lo, range.hi);
+  }
+  static long long check_integer(const json& v, const std::string& field, IntRange range) {
+    return check_integer(v, field, range.lo, range.hi);
+  }
   static long long check_integer(const json& v, const std::string& field, long long lo,
                                  long long hi) {
     if (!v.is_number_integer()) throw InputError(field + ": expected an integer, got " + v.dump());
+    // Above 2^63 - 1 nlohmann holds an unsigned value that get<long long> would wrap negative.
+    if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi))
+      throw InputError(field + ": " + v.dump() + " is outside [" + std::to_string(lo) + ", " +
+                       std::to_string(hi) + "]");
     const auto x = v.get<long long>();
     if (x < lo || x > hi) {
       throw InputError(field + ": " + v.dump() + " is outside [" + std::to_string(lo) + ", " +
@@ -95,6 +115,13 @@ class ObjectReader {
   std::set<std::string> seen_;
 };
 
+// An optional object ("map", "collision", "motion"): absent reads as {}, so leaving it out and
+// writing it empty give the same defaults.
+const json& optional_object(ObjectReader& r, const std::string& key) {
+  static const json empty = json::object();
+  return r.has(key) ? r.raw(key) : empty;
+}
+
 const json& require_array(ObjectReader& r, const std::string& key) {
   const json& v = r.raw(key);
   if (!v.is_array() || v.empty()) throw InputError(r.field(key) + ": expected a non-empty array");
@@ -103,19 +130,27 @@ const json& require_array(ObjectReader& r, const std::string& key) {
 
 std::vector<GridSize> parse_sizes(ObjectReader& r) {
   std::vector<GridSize> sizes;
+  std::map<GridSize, std::size_t> first_index;
   const json& arr = require_array(r, "sizes");
   for (std::size_t i = 0; i < arr.size(); ++i) {
     const std::string f = r.field("sizes") + "[" + std::to_string(i) + "]";
     const json& s = arr[i];
     if (s.is_number_integer()) {
-      const auto n = static_cast<int>(ObjectReader::check_integer(s, f, 2, 8192));
+      const auto n = static_cast<int>(ObjectReader::check_integer(s, f, kMapSideRange));
       sizes.push_back({n, n});
     } else if (s.is_array() && s.size() == 2) {
-      sizes.push_back({static_cast<int>(ObjectReader::check_integer(s[0], f + "[0]", 2, 8192)),
-                       static_cast<int>(ObjectReader::check_integer(s[1], f + "[1]", 2, 8192))});
+      sizes.push_back(
+          {static_cast<int>(ObjectReader::check_integer(s[0], f + "[0]", kMapSideRange)),
+           static_cast<int>(ObjectReader::check_integer(s[1], f + "[1]", kMapSideRange))});
     } else {
       throw InputError(f + ": expected a side length or [width, height]");
     }
+    // Two equal sizes would be two cells with one key (a resume would then run both twice).
+    const auto [it, added] = first_index.emplace(sizes.back(), i);
+    if (!added)
+      throw InputError(f + ": " + std::to_string(sizes.back().width) + "x" +
+                       std::to_string(sizes.back().height) + " is also " + r.field("sizes") + "[" +
+                       std::to_string(it->second) + "] (give each size once)");
   }
   return sizes;
 }
@@ -218,12 +253,50 @@ void resolve_generators(std::vector<GeneratorEntry>& generators,
   }
 }
 
+// Every cell's map spec through make_map's own checks (generators/map_generators.h), so what the
+// first map of a cell would refuse (a min_distance beyond a small size's diagonal) is refused at
+// load, naming the field and the size, before any file is opened. The checks depend on a cell's
+// density only through its range, which every density of the sweep has passed, so one density
+// stands for all.
+void check_cells(const SweepConfig& c) {
+  for (std::size_t g = 0; g < c.generators.size(); ++g) {
+    for (std::size_t k = 0; k < c.sizes.size(); ++k) {
+      MapSpec spec = c.map;
+      spec.generator = c.generators[g].name;
+      spec.params = c.generators[g].resolved;
+      spec.width = c.sizes[k].width;
+      spec.height = c.sizes[k].height;
+      spec.density = c.densities.front();
+      try {
+        check_map_spec(spec);
+      } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        const std::string object =
+            what.rfind("params.", 0) == 0 ? "generators[" + std::to_string(g) + "]." : "map.";
+        throw InputError(object + what + ", for sizes[" + std::to_string(k) + "] (" +
+                         std::to_string(spec.width) + "x" + std::to_string(spec.height) + ")");
+      }
+    }
+  }
+}
+
 std::vector<double> parse_densities(ObjectReader& r) {
   std::vector<double> densities;
+  std::map<std::string, std::size_t> first_index;  // by density_text
   const json& arr = require_array(r, "densities");
-  for (std::size_t i = 0; i < arr.size(); ++i)
-    densities.push_back(ObjectReader::check_number(
-        arr[i], r.field("densities") + "[" + std::to_string(i) + "]", 0.0, 0.95));
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    const std::string f = r.field("densities") + "[" + std::to_string(i) + "]";
+    densities.push_back(ObjectReader::check_number(arr[i], f, kDensityRange));
+    // A density names its cells by density_text (engine/sweep_plan.h): two that print alike
+    // would be two cells with one key.
+    const std::string text = density_text(densities.back());
+    const auto [it, added] = first_index.emplace(text, i);
+    if (!added)
+      throw InputError(
+          f + ": " + arr[i].dump() + " names the same cells as " + r.field("densities") + "[" +
+          std::to_string(it->second) + "] (" + arr[it->second].dump() +
+          "): densities are told apart by their first 10 significant digits (\"" + text + "\")");
+  }
   return densities;
 }
 
@@ -321,15 +394,16 @@ SweepConfig parse_config(const json& j) {
   SweepConfig c;
   ObjectReader r(j, "");
   c.name = r.string("name", c.name);
-  c.seed = static_cast<std::uint64_t>(r.integer("seed", 1, 0, (1LL << 53)));
+  c.seed = static_cast<std::uint64_t>(r.integer("seed", 1, kSeedRange));
   if (r.has("generators")) c.generators = parse_generators(r);
   if (r.has("sizes")) c.sizes = parse_sizes(r);
   if (r.has("densities")) c.densities = parse_densities(r);
   resolve_generators(c.generators, c.sizes);
-  c.maps_per_cell = static_cast<int>(r.integer("maps_per_cell", c.maps_per_cell, 1, 10000000));
-  if (r.has("collision")) c.collision = parse_collision(r.raw("collision"));
+  c.maps_per_cell =
+      static_cast<int>(r.integer("maps_per_cell", c.maps_per_cell, kMapsPerCellRange));
+  c.collision = parse_collision(optional_object(r, "collision"));
   c.map.solvable_rule = c.collision.corner_rule;
-  if (r.has("map")) parse_map_options(r.raw("map"), c.map);
+  parse_map_options(optional_object(r, "map"), c.map);
   if (!r.has("planners")) throw InputError("planners: missing (list at least one planner)");
   c.planners = parse_planners(r, c);
   c.baseline = r.string("baseline", "");
@@ -348,41 +422,99 @@ SweepConfig parse_config(const json& j) {
       throw InputError("baseline: \"" + c.baseline +
                        "\" has an \"only\" scope; the baseline runs on every map so that every "
                        "planner can be paired with it");
-  c.time_limit_s = r.number("time_limit_s", c.time_limit_s, 1e-3, 86400.0);
-  if (r.has("motion")) {
-    ObjectReader m(r.raw("motion"), "motion.");
+  c.time_limit_s = r.number("time_limit_s", c.time_limit_s, kTimeLimitRange);
+  {
+    ObjectReader m(optional_object(r, "motion"), "motion.");
     c.motion.line_speed_mps = m.number("line_speed_mps", c.motion.line_speed_mps, 1e-6, 1e6);
     c.motion.node_time_s = m.number("node_time_s", c.motion.node_time_s, 0.0, 1e6);
     c.motion.turn_speed_radps = m.number("turn_speed_radps", c.motion.turn_speed_radps, 1e-6, 1e6);
     m.finish();
   }
-  c.threads = static_cast<int>(r.integer("threads", 0, 0, 4096));
+  c.threads = static_cast<int>(r.integer("threads", 0, kThreadsRange));
   c.report_path = r.string("report", c.report_path);
   c.runs_path = r.string("runs", c.runs_path);
   if (c.report_path.empty()) throw InputError("report: must not be empty");
   r.finish();
+  // The size first: a config too large to hold may be too large to walk cell by cell.
+  check_sweep_size(c);
+  check_cells(c);
   return c;
 }
 
-SweepConfig load_config(const std::string& path) {
-  const std::string text = read_text_file(path, "config file", std::uintmax_t{64} << 20);
+namespace {
+
+// Line and column of byte `offset` of `text`, both from 1.
+std::string line_column(const std::string& text, std::size_t offset) {
+  std::size_t line = 1, col = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+  return std::to_string(line) + ":" + std::to_string(col);
+}
+
+// Byte offset of the opening quote of the n-th object key (from 0) of well-formed JSON `text`:
+// a key is the one kind of string followed by ':'.
+std::size_t key_offset(const std::string& text, std::size_t n) {
+  std::size_t keys = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '"') continue;
+    const std::size_t open = i;
+    for (++i; i < text.size() && text[i] != '"'; ++i)
+      if (text[i] == '\\') ++i;
+    std::size_t next = i + 1;
+    while (next < text.size() && std::isspace(static_cast<unsigned char>(text[next]))) ++next;
+    if (next < text.size() && text[next] == ':' && keys++ == n) return open;
+  }
+  return text.size();
+}
+
+// Parses `text`, refusing a key that appears twice in one object (nlohmann keeps the last one
+// silently, so one of two settings would be dropped without a word).
+json parse_without_duplicate_keys(const std::string& text, const std::string& path) {
+  std::vector<std::set<std::string>> open_objects;
+  std::size_t keys_seen = 0;
+  std::string duplicate;
+  std::size_t duplicate_index = 0;
+  const json::parser_callback_t check = [&](int, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) {
+      open_objects.emplace_back();
+    } else if (event == json::parse_event_t::object_end) {
+      open_objects.pop_back();
+    } else if (event == json::parse_event_t::key) {
+      const auto& key = parsed.get_ref<const std::string&>();
+      if (!open_objects.back().insert(key).second && duplicate.empty()) {
+        duplicate = key;
+        duplicate_index = keys_seen;
+      }
+      ++keys_seen;
+    }
+    return true;
+  };
   json j;
   try {
-    j = json::parse(text);
+    j = json::parse(text, check);
   } catch (const json::parse_error& e) {
-    // nlohmann reports a byte offset; turn it into line and column for the user.
-    std::size_t line = 1, col = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < text.size(); ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        col = 1;
-      } else {
-        ++col;
-      }
-    }
-    throw InputError(path + ":" + std::to_string(line) + ":" + std::to_string(col) +
+    // nlohmann reports a byte offset (one past the error); the user wants a line and column.
+    throw InputError(path + ":" + line_column(text, e.byte == 0 ? 0 : e.byte - 1) +
                      ": malformed JSON (" + e.what() + ")");
   }
+  if (!duplicate.empty())
+    throw InputError(path + ":" + line_column(text, key_offset(text, duplicate_index)) +
+                     ": key \"" + duplicate +
+                     "\" appears twice in one object (only one value can hold)");
+  return j;
+}
+
+}  // namespace
+
+SweepConfig load_config(const std::string& path) {
+  const std::string text = read_text_file(path, "config file", std::uintmax_t{64} << 20);
+  const json j = parse_without_duplicate_keys(text, path);
   try {
     return parse_config(j);
   } catch (const InputError& e) {

@@ -16,10 +16,29 @@
 
 namespace agv {
 
+// The ranges of the config's numbers that the command line shares: `plan --seed`, `--size`,
+// `--density`, `--map-index` and `run --threads` are checked against these very values
+// (engine/cli_numbers.h), so a number the config refuses the command line refuses too.
+struct IntRange {
+  long long lo = 0;
+  long long hi = 0;
+};
+struct NumberRange {
+  double lo = 0.0;
+  double hi = 0.0;
+};
+inline constexpr IntRange kSeedRange{0, 1LL << 53};
+inline constexpr IntRange kMapSideRange{2, kMaxMapSide};
+inline constexpr NumberRange kDensityRange{0.0, 0.95};
+inline constexpr IntRange kMapsPerCellRange{1, 10'000'000};
+inline constexpr IntRange kMapIndexRange{0, kMapsPerCellRange.hi - 1};
+inline constexpr IntRange kThreadsRange{0, 4096};
+inline constexpr NumberRange kTimeLimitRange{1e-3, 86400.0};
+
 struct GridSize {
   int width = 0;
   int height = 0;
-  bool operator==(const GridSize&) const = default;
+  auto operator<=>(const GridSize&) const = default;
 };
 
 // Where a planner runs when not on every map of the sweep ("only" in the config): a planner

@@ -100,6 +100,11 @@ bool draw_random_endpoints(MapContext& ctx, double min_distance, Cell& start, Ce
 
 }  // namespace
 
+void check_map_spec(const MapSpec& spec) {
+  const GeneratorInfo* info = nullptr;
+  validate(spec, info);
+}
+
 MapInstance make_map(const MapSpec& spec, Rng& rng) {
   const GeneratorInfo* info = nullptr;
   const Params shape = validate(spec, info);

@@ -40,6 +40,11 @@ struct MapInstance {
   int rejections = 0;  // maps thrown away by require_solvable before this one
 };
 
+// The checks make_map makes before drawing anything: std::invalid_argument naming the field
+// ("min_distance: ...", a shape parameter as "params.<name>: ..."). A sweep config runs them on
+// every cell at load, so nothing make_map refuses can pass `agvbench validate`.
+void check_map_spec(const MapSpec& spec);
+
 // Throws std::invalid_argument naming the field for an impossible spec (a shape parameter as
 // "params.<name>"), and std::runtime_error when require_solvable fails max_attempts times.
 MapInstance make_map(const MapSpec& spec, Rng& rng);

@@ -99,4 +99,30 @@ printf 'version 1\n0\tok.map\t3\t3\t0\t0\tx\t1\t1.4\n' >garbled.scen
 expect "scen: malformed line" 'garbled.scen:2' "$bin" scen ok.map garbled.scen
 expect "CLI: bad option value" 'threads' "$bin" run --threads -4
 
+# The config as a whole (issue 15, classes 5 and 6): `validate` refuses everything `run` would,
+# before run opens any file.
+both() {  # both NAME PATTERN CONFIG: validate and run each refuse CONFIG
+  expect "validate: $1" "$2" "$bin" validate "$3"
+  expect "run: $1" "$2" "$bin" run "$3" --out report.json
+}
+good_config report.json | sed 's/"sizes": \[16\]/"sizes": [64, 16], "map": {"endpoints": "random", "min_distance": 30}/' >min_distance.json
+both "map option impossible at one size" 'min_distance.json: map\.min_distance: 30 is outside \[0, 21\.2132\].*sizes\[1\] \(16x16\)' min_distance.json
+good_config report.json | sed 's/"sizes": \[16\]/"sizes": [64, 16], "generators": [{"name": "maze", "params": {"corridor": 40}}]/' >corridor.json
+both "shape parameter impossible at one size" 'generators\[0\]\.params\.corridor: 40 is outside \[1, 16\]' corridor.json
+printf 'j1\nj2\n' >kept.jsonl
+expect "run: a refused config leaves an existing journal as it was" 'min_distance' \
+  "$bin" run min_distance.json --out report.json --runs-out kept.jsonl
+[ "$(cat kept.jsonl)" = "$(printf 'j1\nj2')" ] && ok "journal untouched" || bad "journal changed"
+good_config report.json | sed 's/"seed": 1,/"seed": 1,\n "seed": 2,/' >dup_key.json
+both "duplicate key" 'dup_key.json:2:2: key "seed" appears twice' dup_key.json
+good_config report.json | sed 's/"sizes": \[16\]/"sizes": [16, [16, 16]]/' >dup_size.json
+both "size given twice" 'sizes\[1\]: 16x16 is also sizes\[0\]' dup_size.json
+good_config report.json | sed 's/"densities": \[0.1\]/"densities": [0.1, 0.10000000001]/' >dup_density.json
+both "densities with one cell key" 'densities\[1\]: 0.10000000001 names the same cells as densities\[0\]' dup_density.json
+good_config report.json | sed 's/"sizes": \[16\]/"generators": ["uniform", "uniform"], "sizes": [16]/' >dup_generator.json
+both "generator listed twice" 'generators\[1\]: generator "uniform" appears twice' dup_generator.json
+sizes=$(seq -s, 2 1001)
+good_config report.json | sed "s/\"sizes\": \[16\]/\"sizes\": [$sizes]/; s/\"maps_per_cell\": 2/\"maps_per_cell\": 10000000/" >huge.json
+both "sweep too large for memory (was std::bad_alloc)" 'maps_per_cell: 10000000 maps in each of 1000 cells.*lower maps_per_cell' huge.json
+
 finish test_bad_input

@@ -135,7 +135,9 @@ SweepSize sweep_size(const SweepConfig& config) {
 double usable_memory_bytes() {
   const long pages = sysconf(_SC_PHYS_PAGES);
   const long page_size = sysconf(_SC_PAGE_SIZE);
-  double bytes = pages > 0 && page_size > 0 ? static_cast<double>(pages) * page_size : 0.0;
+  double bytes = pages > 0 && page_size > 0
+                     ? static_cast<double>(pages) * static_cast<double>(page_size)
+                     : 0.0;
   // A container's limit (cgroup v2); "max" when there is none.
   std::ifstream cgroup("/sys/fs/cgroup/memory.max");
   double limit = 0.0;

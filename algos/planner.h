@@ -53,6 +53,29 @@ class Deadline {
   std::shared_ptr<PollCounter> counter_;  // set only by after_polls()
 };
 
+// A deadline polled on every `interval`-th call of expired() (the first call included), its
+// expiry remembered: for loops of shared steps that return no failure of their own (the
+// post-processing of algos/postprocess/, a world's set-up), whose caller then asks
+// has_expired() whether the step was cut short. Once expired it polls no more.
+class DeadlinePoller {
+ public:
+  DeadlinePoller(Deadline deadline, std::int64_t interval)
+      : deadline_(std::move(deadline)), interval_(interval) {}
+  bool expired() {
+    if (!expired_ && calls_++ % interval_ == 0) expired_ = deadline_.expired();
+    return expired_;
+  }
+  bool has_expired() const { return expired_; }
+
+ private:
+  Deadline deadline_;
+  std::int64_t interval_;
+  std::int64_t calls_ = 0;
+  bool expired_ = false;
+};
+// For steps that may run without a deadline (tests, benchmarks): nullptr never expires.
+inline bool poll_expired(DeadlinePoller* poller) { return poller != nullptr && poller->expired(); }
+
 // CPU time of one named phase of a plan call (search, post-processing, smoothing, ...).
 struct PhaseTime {
   std::string name;

@@ -26,10 +26,17 @@ namespace agv {
 namespace {
 
 std::atomic<bool> g_stop{false};
+std::atomic<bool> g_cut{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
 
-extern "C" void request_stop(int) { g_stop.store(true); }
+// The interruption policy (README "Long sweeps", Interruption): a first SIGINT stops taking
+// map tasks and lets the runs in flight finish and be recorded; SIGTERM, or a second signal,
+// also cuts the runs in flight short (isolated workers are killed; those runs are not recorded
+// and run again on resume). Either way the report is written, marked incomplete.
+extern "C" void request_stop(int sig) {
+  if (g_stop.exchange(true) || sig == SIGTERM) g_cut.store(true);
+}
 
-// SIGINT/SIGTERM: stop taking tasks, let runs in flight finish, write what was done.
 void install_stop_handlers() {
   struct sigaction sa {};
   sa.sa_handler = request_stop;
@@ -141,6 +148,7 @@ int command_run(const RunCommand& cmd) {
   options.isolation.hard_limit_s = cmd.isolate_timeout_s;
   options.isolation.memory_mb = cmd.isolate_memory_mb;
   options.stop = &g_stop;
+  options.cut_short = &g_cut;
   install_stop_handlers();
   const SweepPlan plan = plan_sweep(config);
   if (!cmd.quiet) {

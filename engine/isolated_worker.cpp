@@ -32,11 +32,54 @@ void write_all(int fd, const std::string& text) {
   }
 }
 
+struct TaskRequest {
+  std::int64_t task = 0;
+  std::vector<std::size_t> planners;
+};
+
+// Reads {"task": t, "planners": [p, ...]} with t a map task of the sweep and each p a planner
+// scheduled on it; returns why not, or "" when `out` holds the request.
+std::string read_task_request(const std::string& line, const MapTaskContext& context,
+                              TaskRequest& out) {
+  const auto request = nlohmann::json::parse(line, nullptr, false);
+  if (!request.is_object()) return "not a JSON object";
+  for (const auto& [key, value] : request.items())
+    if (key != "task" && key != "planners") return "unknown key \"" + key + "\"";
+  const auto task = request.find("task");
+  const std::int64_t tasks = context.plan.map_tasks();
+  // The parser reads a non-negative integer as unsigned: a negative or fractional one is not.
+  if (task == request.end() || !task->is_number_unsigned() ||
+      task->get<std::uint64_t>() >= static_cast<std::uint64_t>(tasks))
+    return "\"task\" must be a map task index in [0, " + std::to_string(tasks) + "), got " +
+           (task == request.end() ? std::string("none") : task->dump());
+  out.task = static_cast<std::int64_t>(task->get<std::uint64_t>());
+  const auto planners = request.find("planners");
+  if (planners == request.end() || !planners->is_array())
+    return "\"planners\" must be an array of planner indices";
+  const std::size_t count = context.config.planners.size();
+  const SweepCell& cell = context.plan.cell_of(out.task);
+  const int map_index = context.plan.map_index_of(out.task);
+  out.planners.clear();
+  for (const auto& p : *planners) {
+    if (!p.is_number_unsigned() || p.get<std::uint64_t>() >= count)
+      return "planner index " + p.dump() + " is not in [0, " + std::to_string(count) + ")";
+    const auto index = static_cast<std::size_t>(p.get<std::uint64_t>());
+    if (map_index >= scoped_maps(context.config.planners[index], cell, context.plan.maps_per_cell))
+      return "planner " + std::to_string(index) + " is not scheduled on task " +
+             std::to_string(out.task);
+    out.planners.push_back(index);
+  }
+  return "";
+}
+
 }  // namespace
 
 WorkerProcess::WorkerProcess(std::vector<std::string> command, std::int64_t memory_mb,
-                             std::string config_line)
-    : command_(std::move(command)), memory_mb_(memory_mb), config_line_(std::move(config_line)) {
+                             std::string config_line, const std::atomic<bool>* cut_short)
+    : command_(std::move(command)),
+      memory_mb_(memory_mb),
+      config_line_(std::move(config_line)),
+      cut_short_(cut_short) {
   // A write to a worker that just died must be an error to handle, not a fatal SIGPIPE.
   ::signal(SIGPIPE, SIG_IGN);
   spawn();
@@ -52,14 +95,25 @@ void WorkerProcess::spawn() {
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, in_pipe[0], STDIN_FILENO);
   posix_spawn_file_actions_adddup2(&actions, out_pipe[1], STDOUT_FILENO);
+  // A process group of its own (pgid = its pid), set in the child before exec: a terminal's
+  // SIGINT goes to the parent's group only, and the parent decides what happens to the runs.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
   std::vector<std::string> args = command_;
   args.push_back("--memory-mb");
   args.push_back(std::to_string(memory_mb_));
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
-  const int rc = posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), environ);
+  const int rc = posix_spawn(&pid_, argv[0], &actions, &attributes, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  // And in the parent, as a shell does, so no window exists in which the child is still in our
+  // group whatever the spawn implementation; EACCES (the child already ran exec, having set its
+  // group itself) is the expected answer with glibc's vfork-style posix_spawn.
+  if (rc == 0) ::setpgid(pid_, pid_);
   ::close(in_pipe[0]);
   ::close(out_pipe[1]);
   if (rc != 0) {
@@ -90,9 +144,14 @@ void WorkerProcess::spawn() {
   } else if (status == ReadStatus::timeout) {
     stop();
     why = "no answer within 60 s";
-  } else {
-    why = describe_exit();
+  } else if (status == ReadStatus::cut) {
     stop();
+    throw RunsCut();
+  } else {
+    bool interrupted = false;
+    why = describe_exit(interrupted);
+    stop();
+    if (interrupted) throw RunsCut();
   }
   throw std::runtime_error("isolation worker failed to start: " + why);
 }
@@ -108,9 +167,12 @@ WorkerProcess::ReadStatus WorkerProcess::read_line(Clock::time_point deadline, s
     const auto left =
         std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
     if (left <= 0) return ReadStatus::timeout;
+    if (cut_requested()) return ReadStatus::cut;
+    // Short slices when a cut may be requested: a signal interrupts the poll of one thread only.
+    const decltype(left) slice = cut_short_ != nullptr ? 100 : 1000;
     pollfd pfd{from_child_, POLLIN, 0};
-    const int pr = ::poll(&pfd, 1, static_cast<int>(std::min<long long>(left, 1000)));
-    if (pr <= 0) continue;  // EINTR or a poll slice without data: check the deadline again
+    const int pr = ::poll(&pfd, 1, static_cast<int>(std::min(left, slice)));
+    if (pr <= 0) continue;  // EINTR or a poll slice without data: check again
     char buf[65536];
     const ssize_t n = ::read(from_child_, buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
@@ -132,14 +194,18 @@ void WorkerProcess::stop() {
   to_child_ = from_child_ = -1;
 }
 
-std::string WorkerProcess::describe_exit() {
+std::string WorkerProcess::describe_exit(bool& interrupted) {
   int status = 0;
   pid_t r;
   while ((r = ::waitpid(pid_, &status, 0)) < 0 && errno == EINTR) {
   }
   pid_ = -1;
+  interrupted = false;
   if (r > 0 && WIFSIGNALED(status)) {
     const int sig = WTERMSIG(status);
+    // Signals that ask a process to stop: someone interrupted the worker, its run did not fail.
+    // (A fault is SIGSEGV, SIGABRT, SIGBUS, SIGFPE; the parent's own kills are SIGKILL.)
+    interrupted = sig == SIGINT || sig == SIGTERM || sig == SIGHUP || sig == SIGQUIT;
     return std::string("worker killed by signal ") + std::to_string(sig) + " (" +
            (sigdescr_np(sig) ? sigdescr_np(sig) : "?") + ")";
   }
@@ -184,9 +250,14 @@ WorkerProcess::Reply WorkerProcess::next_run(double hard_limit_s) {
       reply.outcome = Outcome::timeout;
       reply.message = "killed at the hard limit of " + std::to_string(hard_limit_s) + " s";
       return reply;
+    case ReadStatus::cut:
+      stop();
+      reply.cut = true;
+      reply.message = "cut short by a stop request";
+      return reply;
     case ReadStatus::closed:
       reply.outcome = Outcome::crash;
-      reply.message = describe_exit();
+      reply.message = describe_exit(reply.cut);
       ::close(to_child_);
       ::close(from_child_);
       to_child_ = from_child_ = -1;
@@ -205,7 +276,10 @@ int worker_main(std::int64_t memory_mb) {
     }
   }
   std::string line;
-  if (!std::getline(std::cin, line)) return 1;
+  if (!std::getline(std::cin, line)) {
+    std::cerr << "agvbench worker: no config line on stdin\n";
+    return 2;
+  }
   SweepConfig config;
   MapTaskWorkspace workspace;
   try {
@@ -217,11 +291,16 @@ int worker_main(std::int64_t memory_mb) {
   }
   std::cout << nlohmann::json{{"ready", true}}.dump() << "\n" << std::flush;
   const MapTaskContext context(config);
+  std::int64_t number = 0;
   while (std::getline(std::cin, line)) {
-    const auto request = nlohmann::json::parse(line);
-    const auto task = request.at("task").get<std::int64_t>();
-    const auto planners = request.at("planners").get<std::vector<std::size_t>>();
-    run_map_task(context, task, planners, workspace, [](const MapTaskRun& run) {
+    ++number;
+    TaskRequest request;
+    if (const std::string why = read_task_request(line, context, request); !why.empty()) {
+      // A malformed request is a bug of whoever sent it: refused by name, never run.
+      std::cerr << "agvbench worker: request " << number << ": " << why << "\n";
+      return 2;
+    }
+    run_map_task(context, request.task, request.planners, workspace, [](const MapTaskRun& run) {
       std::cout << run.record().dump() << "\n" << std::flush;
     });
   }

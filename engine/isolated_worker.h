@@ -13,13 +13,22 @@
 // limit; after a fault it starts a fresh worker on the task's remaining planners. Workers are
 // started with posix_spawn, which is safe from a multi-threaded parent (no fork of a process
 // holding other threads' locks).
+//
+// Interruption (README "Long sweeps", Interruption): each worker runs in a process group of
+// its own, so a terminal's Ctrl-C (SIGINT to the foreground process group) reaches the parent
+// alone, which lets the runs in flight finish. When the parent is asked to cut them short
+// (`cut_short` set), it kills the worker; such a run, like one whose worker died of SIGINT,
+// SIGTERM, SIGHUP or SIGQUIT (a signal sent to it, not a fault of the planner), is answered as
+// cut: it is not a result, is not recorded, and runs again on resume.
 
 #include <sys/types.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -38,7 +47,10 @@ struct IsolationOptions {
 
 class WorkerProcess {
  public:
-  WorkerProcess(std::vector<std::string> command, std::int64_t memory_mb, std::string config_line);
+  // `cut_short`, when given, is polled while a run is awaited: once it is set the worker is
+  // killed and the run answered as cut.
+  WorkerProcess(std::vector<std::string> command, std::int64_t memory_mb, std::string config_line,
+                const std::atomic<bool>* cut_short = nullptr);
   ~WorkerProcess();
   WorkerProcess(const WorkerProcess&) = delete;
   WorkerProcess& operator=(const WorkerProcess&) = delete;
@@ -47,6 +59,8 @@ class WorkerProcess {
     bool ok = false;  // record holds the worker's record
     nlohmann::json record;
     Outcome outcome = Outcome::crash;  // when !ok: timeout or crash
+    // When !ok: an interruption ended the run (see above), so it has no outcome to record.
+    bool cut = false;
     std::string message;
     std::int64_t wall_ns = 0;
   };
@@ -59,17 +73,23 @@ class WorkerProcess {
 
  private:
   using Clock = std::chrono::steady_clock;
-  enum class ReadStatus { line, timeout, closed };
-  // Throws std::runtime_error when the worker cannot start or refuses the config.
+  enum class ReadStatus { line, timeout, closed, cut };
+  // Throws std::runtime_error when the worker cannot start or refuses the config, and
+  // RunsCut when cut_short is set before it is ready.
   void spawn();
-  // The worker's next line, unless the deadline passes or the worker's stdout closes first.
+  // The worker's next line, unless the deadline passes, the worker's stdout closes or
+  // cut_short is set first.
   ReadStatus read_line(Clock::time_point deadline, std::string& line);
   void stop();  // kill and reap
-  std::string describe_exit();
+  // Reaps the exited worker; `interrupted` tells whether a signal that asks a process to stop
+  // (not a fault) ended it.
+  std::string describe_exit(bool& interrupted);
+  bool cut_requested() const { return cut_short_ != nullptr && cut_short_->load(); }
 
   std::vector<std::string> command_;
   std::int64_t memory_mb_;
   std::string config_line_;
+  const std::atomic<bool>* cut_short_;
   pid_t pid_ = -1;
   int to_child_ = -1;
   int from_child_ = -1;
@@ -79,5 +99,10 @@ class WorkerProcess {
 // The worker side: `agvbench worker --memory-mb N` (or a test binary's equivalent). Returns the
 // process exit code.
 int worker_main(std::int64_t memory_mb);
+
+// Thrown by WorkerProcess when a stop request cut it short before a run began: nothing to record.
+struct RunsCut : std::runtime_error {
+  RunsCut() : std::runtime_error("cut short by a stop request") {}
+};
 
 }  // namespace agv

@@ -136,6 +136,7 @@ struct SweepState {
   RecordRestorer restorer;  // worker records into slots
   bool keep_lines;          // whether the runs' records become journal lines
   std::atomic<std::int64_t> executed{0};
+  std::atomic<bool> cut{false};  // an interruption cut runs short: they are not recorded
 };
 
 // Runs the task's pending planners in this thread; returns their journal lines.
@@ -153,7 +154,8 @@ std::string run_task_in_process(SweepState& s, MapTaskWorkspace& workspace, std:
 
 // Runs the task's pending planners in this thread's worker process; returns their journal
 // lines. A run the worker does not answer (it hung, died or sent garbage) is recorded here with
-// its outcome, and a fresh worker takes the task's remaining planners.
+// its outcome, and a fresh worker takes the task's remaining planners. A run an interruption cut
+// short is not recorded: the task's remaining planners stay pending for a resume.
 std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard_limit_s,
                               std::int64_t task) {
   std::string lines;
@@ -165,6 +167,10 @@ std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard
     while (alive && next < planners.size()) {
       const std::size_t p = planners[next++];
       WorkerProcess::Reply reply = process.next_run(hard_limit_s);
+      if (reply.cut) {
+        s.cut = true;
+        return lines;
+      }
       alive = reply.ok;
       nlohmann::json record;
       if (reply.ok) {
@@ -224,7 +230,7 @@ class FirstFailure {
 };
 
 // Runs `todo` over oneTBB until every task is done, a task fails or a stop is requested (runs
-// in flight finish). Returns whether a stop request left tasks untaken.
+// in flight finish unless cut short). Returns whether an interruption left runs undone.
 bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
                const SweepOptions& options, JournalWriter& journal, FirstFailure& failure) {
   const bool isolated = options.isolation.enabled;
@@ -234,7 +240,7 @@ bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
     Worker w;
     if (isolated) {
       w.process = std::make_unique<WorkerProcess>(launch.command, options.isolation.memory_mb,
-                                                  launch.config_line);
+                                                  launch.config_line, options.cut_short);
     } else {
       w.workspace.planners = configure_planners(state.context.config);
     }
@@ -243,7 +249,7 @@ bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
   std::atomic<bool> stopped{false};
   tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t i) {
     if (failure.failed()) return;
-    if (options.stop != nullptr && options.stop->load()) {
+    if ((options.stop != nullptr && options.stop->load()) || state.cut.load()) {
       stopped = true;
       return;
     }
@@ -264,13 +270,15 @@ bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
           failure.record_journal(e);
         }
       }
+    } catch (const RunsCut&) {
+      state.cut = true;  // a worker not yet ready when the cut came: no run to record
     } catch (const std::exception& e) {
       failure.record(state.results.plan, task, e);
     }
     progress.advance();
   });
   progress.finish();
-  return stopped.load();
+  return stopped.load() || state.cut.load();
 }
 
 }  // namespace

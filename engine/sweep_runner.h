@@ -83,6 +83,9 @@ struct SweepOptions {
   int shard_count = 1;
   // Set (by a signal handler, say) to stop taking new map tasks; runs in flight finish.
   const std::atomic<bool>* stop = nullptr;
+  // Set as well to cut the runs in flight short: under isolation their workers are killed and
+  // the runs are not recorded (a resume runs them); in process they end at their deadline.
+  const std::atomic<bool>* cut_short = nullptr;
   IsolationOptions isolation;
 };
 

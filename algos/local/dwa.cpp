@@ -160,8 +160,9 @@ void sample_pairs(const VelocityWindow& win, const StepShape& shape, DwaScratch&
 
 // Step 3: every pair rolled out at once: per rollout, the first hit step (static, other), the
 // minimum clearances and how many local goals it has passed.
-void roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, const DwaTarget& target,
-              const DwaView& view, DwaScratch& s) {
+// False when `poll` expired first.
+bool roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, const DwaTarget& target,
+              const DwaView& view, DwaScratch& s, DeadlinePoller* poll) {
   const std::span<const Point> goals = target.goals;
   const GoalPassing& passing = target.passing;
   const int n = shape.n, steps = shape.steps;
@@ -216,6 +217,7 @@ void roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, cons
   const double tol2 = passing.tolerance * passing.tolerance;
   const double radius2 = passing.radius * passing.radius;
   for (int k = 1; k <= steps; ++k) {
+    if (poll_expired(poll)) return false;
     s.px += s.chord * s.ux;
     s.py += s.chord * s.uy;
     for (int i = 0; i < n; ++i) {
@@ -256,6 +258,7 @@ void roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, cons
               .select(static_cast<double>(j + 1), s.goal_index);
     }
   }
+  return true;
 }
 
 // Step 4: V_a (eq. 10), dist(v, w) = arc length to the last rollout point before the first hit.
@@ -359,7 +362,8 @@ int best_pair(const StepShape& shape, const DwaScratch& s) {
 }  // namespace
 
 DwaDecision dwa_step(const DwaParams& p, const Pose& pose, double v, double w,
-                     const DwaTarget& target, const DwaView& view, DwaScratch& s) {
+                     const DwaTarget& target, const DwaView& view, DwaScratch& s,
+                     DeadlinePoller* poll) {
   const StepShape shape = step_shape(p);
   DwaDecision out;
   out.samples = shape.n;
@@ -367,7 +371,10 @@ DwaDecision dwa_step(const DwaParams& p, const Pose& pose, double v, double w,
 
   const VelocityWindow win = capped_window(p, v, w, target);
   sample_pairs(win, shape, s);
-  roll_out(p, pose, shape, target, view, s);
+  if (!roll_out(p, pose, shape, target, view, s, poll)) {
+    out.cut = true;
+    return out;
+  }
   const Admissibility admissible = admissible_pairs(p, shape, s);
   out.any_admissible = admissible.any;
   out.any_moving = admissible.moving;

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "algos/local/unicycle.h"
+#include "algos/planner.h"
 #include "core/grid.h"
 
 namespace agv {
@@ -132,6 +133,7 @@ struct DwaDecision {
   double stop_distance = 0.0;  // dist(v, w) of the chosen pair in metres (inf: rollout clear)
   int samples = 0;             // velocity pairs evaluated
   int rollout_steps = 0;       // K = round(predict_time / dt)
+  bool cut = false;            // the deadline expired during the rollouts: no command chosen
 };
 
 // One DWA control step from `pose` (cells) at velocity (v, w). `goals` (cells, at least one) is
@@ -171,8 +173,11 @@ struct DwaTarget {
   double speed_cap = std::numeric_limits<double>::infinity();
 };
 
+// `poll` (optional) is polled once per rollout step of all pairs: a step of many pairs and many
+// rollout steps is long. When it expires the decision is `cut` and holds no command.
 DwaDecision dwa_step(const DwaParams& p, const Pose& pose, double v, double w,
-                     const DwaTarget& target, const DwaView& view, DwaScratch& scratch);
+                     const DwaTarget& target, const DwaView& view, DwaScratch& scratch,
+                     DeadlinePoller* poll = nullptr);
 
 // Exact distance from p to the nearest known obstacle square, capped at 1 cell (the DWA's static
 // term; exposed for tests). 0 inside an obstacle or outside the grid.

@@ -62,8 +62,8 @@ DwaWorld::DwaWorld(const Grid& grid, std::vector<Cell> unknown, std::vector<Movi
     : grid_(&grid), unknown_(std::move(unknown)), moving_(std::move(moving)) {}
 
 DwaWorld DwaWorld::generate(const Grid& grid, Cell start, Cell goal,
-                            std::span<const Point> reference_path, const WorldSpec& spec,
-                            Rng& rng) {
+                            std::span<const Point> reference_path, const WorldSpec& spec, Rng& rng,
+                            DeadlinePoller* poll) {
   std::vector<Cell> unknown;
   const std::vector<Cell> along = cells_along(reference_path);
   std::vector<Cell> candidates;
@@ -77,6 +77,7 @@ DwaWorld DwaWorld::generate(const Grid& grid, Cell start, Cell goal,
     ConnectivityScratch connectivity;
     for (int k = 0; k < spec.unknown_obstacles; ++k) {
       for (int attempt = 0; attempt < 50; ++attempt) {
+        if (poll_expired(poll)) return DwaWorld(grid, std::move(unknown), {});
         Cell c = candidates[rng.below(static_cast<std::uint32_t>(candidates.size()))];
         if (rng.chance(0.5)) {
           const std::uint32_t d = rng.below(8);  // core/corner_rule.h directions
@@ -101,6 +102,7 @@ DwaWorld DwaWorld::generate(const Grid& grid, Cell start, Cell goal,
   const Point s = centre(start), g = centre(goal);
   for (int k = 0; k < spec.moving_obstacles; ++k) {
     for (int attempt = 0; attempt < 200; ++attempt) {
+      if (poll_expired(poll)) return world;
       Point c;
       if (spec.moving_on_path && reference_path.size() >= 2) {
         c = point_at(reference_path, rng.uniform(0.35, 0.65));

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "algos/local/dwa.h"
+#include "algos/planner.h"
 #include "core/grid.h"
 #include "core/rng.h"
 
@@ -52,8 +53,11 @@ class DwaWorld {
   // moves), else redrawn (up to 50 tries, then fewer cells). Moving discs: redrawn (up to 200
   // tries, then fewer discs) until clear of every static and unknown cell, at least
   // robot_radius + radius + 1 cell from the start and radius + 0.5 from the goal centre.
+  // `poll` (optional) is polled once per try (an unknown cell's costs a flood fill of the map);
+  // once it has expired the world is left unfinished, for the caller to discard.
   static DwaWorld generate(const Grid& grid, Cell start, Cell goal,
-                           std::span<const Point> reference_path, const WorldSpec& spec, Rng& rng);
+                           std::span<const Point> reference_path, const WorldSpec& spec, Rng& rng,
+                           DeadlinePoller* poll = nullptr);
 
   const Grid& grid() const { return *grid_; }
   std::span<const Cell> unknown_cells() const { return unknown_; }

@@ -309,9 +309,17 @@ class FusionPlanner final : public Planner {
     std::vector<Point> reference;
     if (PlanResult ref = reference_->plan(req); ref.ok()) reference = std::move(ref.path);
     Rng wrng = world_rng(grid, req.start, req.goal, s_.world_seed);
-    DwaWorld world = DwaWorld::generate(grid, req.start, req.goal, reference, s_.world, wrng);
+    DeadlinePoller world_poll(req.deadline, 1);
+    DwaWorld world =
+        DwaWorld::generate(grid, req.start, req.goal, reference, s_.world, wrng, &world_poll);
     count_collision_checks(world_checks - collision_checks_on_thread());
     result.phases.push_back({"world", thread_cpu_ns() - t0});
+    if (world_poll.has_expired()) {
+      PlanResult f = PlanResult::failed(Failure::limit, "time limit while building the world");
+      f.rule = CornerRule::no_corner_cut;
+      f.phases = std::move(result.phases);
+      return f;
+    }
 
     // 2. The global path and its key points (pure DWA: start and goal).
     std::vector<Point> global_path;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
@@ -18,6 +19,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kDeadlineCheckSteps = 32;
+constexpr std::int64_t kRolloutPointsPerPoll = 4096;
 constexpr double kStandStill = 1e-3;  // cells per control step
 // Key points a rollout may pass within one horizon (T v_max = 6 m at the defaults).
 constexpr std::size_t kLookaheadGoals = 8;
@@ -124,6 +126,9 @@ class Drive {
         goal_(centre(req.goal)),
         keys_(std::move(keys)),
         dp_(o.dwa),
+        rollout_poll_(req.deadline, std::max<std::int64_t>(
+                                        1, kRolloutPointsPerPoll /
+                                               std::max(1, o.dwa.v_samples * o.dwa.w_samples))),
         tr_(std::make_shared<Trajectory>()) {
     if (keys_.size() < 2) keys_ = {start_, goal_};
     dp_.cell_edge = edge_;
@@ -160,7 +165,13 @@ class Drive {
       advance_local_goal(pos);
       sense_moving(pos);
       const DwaView view{grid_, fs_.seen_cells, fs_.visible};
-      const DwaDecision d = dwa_step(dp_, pose_, v_, w_, local_target(pos), view, fs_.dwa);
+      const DwaDecision d =
+          dwa_step(dp_, pose_, v_, w_, local_target(pos), view, fs_.dwa, &rollout_poll_);
+      if (d.cut) {
+        out_.deadline_hit = true;
+        end = "timeout";
+        break;
+      }
       move(d);
       if (const char* reason = end_of_run(d, pos)) {
         end = reason;
@@ -313,6 +324,8 @@ class Drive {
   GoalPassing passing_;
   double horizon_cells_ = 0.0;
 
+  // The DWA's rollouts poll the deadline about once per kRolloutPointsPerPoll rollout points.
+  DeadlinePoller rollout_poll_;
   DriveResult out_;
   std::shared_ptr<Trajectory> tr_;
   Pose pose_;

@@ -160,7 +160,8 @@ void build_bezier_path(std::span<const Point> keys, const std::vector<double>& d
 }  // namespace
 
 std::vector<Point> bezier_corners(const Grid& grid, std::span<const Point> keys,
-                                  const SightRule& sight, const BezierOptions& options) {
+                                  const SightRule& sight, const BezierOptions& options,
+                                  DeadlinePoller* poll) {
   std::vector<Point> input(keys.begin(), keys.end());
   if (keys.size() < 3) return input;
   // 1. Per corner, the largest distance (L, halved up to shrink_steps times) whose curve, joined
@@ -174,6 +175,7 @@ std::vector<Point> bezier_corners(const Grid& grid, std::span<const Point> keys,
     if (l_in > 0.0 && l_out > 0.0 && !goes_straight(prev, k, next)) {
       double di = std::min({options.corner_distance, l_in / 2, l_out / 2});
       for (int s = 0; s <= options.shrink_steps; ++s, di *= 0.5) {
+        if (poll_expired(poll)) return input;
         const auto [p0, p2] = bezier_ends(keys, i, di);
         piece.assign(1, reached);
         const auto curve = sample_quadratic_bezier(p0, k, p2, options.points_per_curve);
@@ -195,6 +197,7 @@ std::vector<Point> bezier_corners(const Grid& grid, std::span<const Point> keys,
     build_bezier_path(keys, d, options.points_per_curve, out, owner);
     std::size_t bad = out.size();
     for (std::size_t p = 0; p + 1 < out.size(); ++p) {
+      if (poll_expired(poll)) return input;
       if (!segment_free(grid, out[p], out[p + 1], sight)) {
         bad = p;
         break;
@@ -214,7 +217,7 @@ std::vector<Point> bezier_corners(const Grid& grid, std::span<const Point> keys,
 
 std::vector<Point> bspline_smooth(const Grid& grid, std::span<const Point> dense,
                                   std::vector<int> kept, const SightRule& sight,
-                                  const BsplineOptions& options) {
+                                  const BsplineOptions& options, DeadlinePoller* poll) {
   std::vector<Point> polygon = select_points(dense, kept);
   if (kept.size() < 3) {
     // Two control points: the curve is their segment.
@@ -236,6 +239,7 @@ std::vector<Point> bspline_smooth(const Grid& grid, std::span<const Point> dense
     std::vector<Point> samples = sample_bspline(controls, options.sample_step, &segment_of);
     std::size_t bad = samples.size();
     for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
+      if (poll_expired(poll)) return polygon;
       if (!segment_free(grid, samples[i], samples[i + 1], sight)) {
         bad = i;
         break;
@@ -259,6 +263,7 @@ std::vector<Point> bspline_smooth(const Grid& grid, std::span<const Point> dense
     for (int k = k_lo; k < k_hi; ++k) {
       const Point a = dense[kept[k]], b = dense[kept[k + 1]];
       for (int d = kept[k] + 1; d < kept[k + 1]; ++d) {
+        if (poll_expired(poll)) return polygon;
         const double e = squared_distance_to_segment(hit, dense[d], dense[d]);
         if (e < best_gap) {
           best_gap = e;
@@ -360,7 +365,7 @@ double polyline_length_cells(std::span<const Point> path) {
 }
 
 void avoid_obstacles(const Grid& grid, std::vector<Point>& keys, const SightRule& sight,
-                     double offset, double near, double max_length) {
+                     double offset, double near, double max_length, DeadlinePoller* poll) {
   if (keys.size() < 3) return;
   double length = polyline_length_cells(keys);
   // An adjustment may bend the path around an obstacle (it lengthens it: that is eq. 12-13's
@@ -373,6 +378,7 @@ void avoid_obstacles(const Grid& grid, std::vector<Point>& keys, const SightRule
   };
   // 1. Push key points away from the obstacles around them (eq. 12-13).
   for (std::size_t i = 1; i + 1 < keys.size(); ++i) {
+    if (poll_expired(poll)) return;  // every move so far kept the polyline free
     const std::optional<Point> moved = pushed_key(grid, keys[i], offset);
     if (!moved) continue;
     const Point before = keys[i - 1], after = keys[i + 1];
@@ -396,6 +402,7 @@ void avoid_obstacles(const Grid& grid, std::vector<Point>& keys, const SightRule
   const SightRule close{SightRule::Kind::clearance, sight.corners, near};
   std::vector<Point> out{keys.front()};
   for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
+    if (poll_expired(poll)) return;
     const Point a = keys[i], b = keys[i + 1];
     const SightHit hit = check_segment(grid, a, b, close);
     if (hit.kind == SightHit::Kind::clearance) {

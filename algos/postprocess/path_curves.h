@@ -12,12 +12,17 @@
 // Fallbacks keep that guarantee: a Bezier corner that still hits after shrinking stays a sharp
 // corner; a B-spline that still hits after its refits gives back its control polygon; a result
 // that fails the final check gives back the input polyline (free by precondition).
+//
+// Deadline: the curve steps poll `poll` (algos/planner.h DeadlinePoller) once per corner or
+// sight test and, once it has expired, give back their input, which the caller (seeing
+// poll->has_expired()) discards.
 
 #include <limits>
 #include <numbers>
 #include <span>
 #include <vector>
 
+#include "algos/planner.h"
 #include "core/grid.h"
 #include "core/line_of_sight.h"
 
@@ -46,7 +51,8 @@ struct BezierOptions {
 // polyline under `sight`), with P1 = the key point and P0, P2 on the incoming and outgoing
 // segments; a curve that hits is shrunk, and the corner stays sharp if it still hits.
 std::vector<Point> bezier_corners(const Grid& grid, std::span<const Point> keys,
-                                  const SightRule& sight, const BezierOptions& options = {});
+                                  const SightRule& sight, const BezierOptions& options = {},
+                                  DeadlinePoller* poll = nullptr);
 
 struct BsplineOptions {
   double sample_step = 0.1;  // cells between samples
@@ -61,7 +67,8 @@ struct BsplineOptions {
 // through it). After max_refits, the control polygon dense[kept] itself is returned.
 std::vector<Point> bspline_smooth(const Grid& grid, std::span<const Point> dense,
                                   std::vector<int> kept, const SightRule& sight,
-                                  const BsplineOptions& options = {});
+                                  const BsplineOptions& options = {},
+                                  DeadlinePoller* poll = nullptr);
 
 // Sum of the segment lengths, cells.
 double polyline_length_cells(std::span<const Point> path);
@@ -83,6 +90,7 @@ inline constexpr double kReversalAngle = 150.0 * std::numbers::pi / 180.0;
 // and the adjustment makes no reversal the input did not have.
 void avoid_obstacles(const Grid& grid, std::vector<Point>& keys, const SightRule& sight,
                      double offset = 0.5, double near = 1.0,
-                     double max_length = std::numeric_limits<double>::infinity());
+                     double max_length = std::numeric_limits<double>::infinity(),
+                     DeadlinePoller* poll = nullptr);
 
 }  // namespace agv

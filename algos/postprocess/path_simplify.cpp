@@ -66,7 +66,7 @@ void remove_collinear(std::vector<Point>& path) {
 }
 
 std::vector<int> turning_point_keep(const Grid& grid, std::span<const Point> path,
-                                    const SightRule& sight) {
+                                    const SightRule& sight, DeadlinePoller* poll) {
   std::vector<int> keep = all_indices(path.size());
   bool changed = true;
   while (changed && keep.size() > 2) {
@@ -75,6 +75,7 @@ std::vector<int> turning_point_keep(const Grid& grid, std::span<const Point> pat
     next.reserve(keep.size());
     next.push_back(keep.front());
     for (std::size_t k = 1; k + 1 < keep.size(); ++k) {
+      if (poll_expired(poll)) return keep;
       if (segment_free(grid, path[next.back()], path[keep[k + 1]], sight)) {
         changed = true;  // keep[k] is a removable turning point (eq. 5.1b: no obstacle between)
         continue;
@@ -87,12 +88,13 @@ std::vector<int> turning_point_keep(const Grid& grid, std::span<const Point> pat
   return keep;
 }
 
-void remove_turning_points(const Grid& grid, std::vector<Point>& path, const SightRule& sight) {
-  path = select_points(path, turning_point_keep(grid, path, sight));
+void remove_turning_points(const Grid& grid, std::vector<Point>& path, const SightRule& sight,
+                           DeadlinePoller* poll) {
+  path = select_points(path, turning_point_keep(grid, path, sight, poll));
 }
 
 std::vector<int> greedy_keep(const Grid& grid, std::span<const Point> path, const SightRule& sight,
-                             bool from_goal) {
+                             bool from_goal, DeadlinePoller* poll) {
   const int n = static_cast<int>(path.size());
   if (n <= 2) return all_indices(path.size());
   // Walking from the goal is the same walk on the reversed index order.
@@ -102,6 +104,7 @@ std::vector<int> greedy_keep(const Grid& grid, std::span<const Point> path, cons
   while (anchor < n - 1) {
     int next = anchor + 1;  // consecutive points are kept when nothing farther is in sight
     for (int j = n - 1; j > anchor + 1; --j) {
+      if (poll_expired(poll)) return all_indices(path.size());
       if (segment_free(grid, at(anchor), at(j), sight)) {
         next = j;
         break;
@@ -126,11 +129,15 @@ void remove_redundant_from_goal(const Grid& grid, std::vector<Point>& path,
   path = select_points(path, greedy_keep(grid, path, sight, true));
 }
 
-std::vector<int> forward_keep(const Grid& grid, std::span<const Point> path,
-                              const SightRule& sight) {
+std::vector<int> forward_keep(const Grid& grid, std::span<const Point> path, const SightRule& sight,
+                              DeadlinePoller* poll) {
   const int n = static_cast<int>(path.size());
   if (n <= 2) return all_indices(path.size());
   const SightRule cells = SightRule::cells(sight.corners);
+  // An expired deadline answers "not in sight", which ends every scan below.
+  const auto in_sight = [&](Point a, Point b, const SightRule& rule) {
+    return !poll_expired(poll) && segment_free(grid, a, b, rule);
+  };
   std::vector<int> keep{0};
   int key = 0;
   while (key < n - 1) {
@@ -138,13 +145,15 @@ std::vector<int> forward_keep(const Grid& grid, std::span<const Point> path,
     // under a margin a point too close to a wall) cannot be a key point: the run of points in
     // sight starts at the first one that is, else at the first free under plain cells.
     int j = key + 1;
-    while (j < n - 1 && !segment_free(grid, path[key], path[j], sight)) ++j;
-    if (j == n - 1 && !segment_free(grid, path[key], path[j], sight)) {
+    while (j < n - 1 && !poll_expired(poll) && !segment_free(grid, path[key], path[j], sight)) ++j;
+    if (j == n - 1 && !in_sight(path[key], path[j], sight)) {
       j = key + 1;
-      while (j < n - 1 && !segment_free(grid, path[key], path[j], cells)) ++j;
+      while (j < n - 1 && !poll_expired(poll) && !segment_free(grid, path[key], path[j], cells))
+        ++j;
     } else {
-      while (j + 1 < n && segment_free(grid, path[key], path[j + 1], sight)) ++j;
+      while (j + 1 < n && in_sight(path[key], path[j + 1], sight)) ++j;
     }
+    if (poll_expired(poll)) return all_indices(path.size());
     keep.push_back(j);
     key = j;
   }
@@ -167,12 +176,14 @@ void insert_midpoints(std::vector<Point>& path) {
   path.swap(out);
 }
 
-void shortcut_direct_midpoint(const Grid& grid, std::vector<Point>& path, const SightRule& sight) {
+void shortcut_direct_midpoint(const Grid& grid, std::vector<Point>& path, const SightRule& sight,
+                              DeadlinePoller* poll) {
   remove_collinear(path);
   if (path.size() <= 2) return;
   auto mid = [](Point a, Point b) { return Point{(a.x + b.x) / 2, (a.y + b.y) / 2}; };
   std::vector<Point> out{path.front()};
   for (std::size_t i = 1; i + 1 < path.size(); ++i) {
+    if (poll_expired(poll)) return;  // path unchanged past its collinear removal
     const Point s = out.back(), b = path[i], g = path[i + 1];
     if (segment_free(grid, s, g, sight)) continue;  // direct connection: B is redundant
     // S-C-G (Figure 5): S-C lies on S-B, checked anyway since its end moved onto the segment.

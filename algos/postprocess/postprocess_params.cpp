@@ -1,6 +1,7 @@
 #include "algos/postprocess/postprocess_params.h"
 
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "algos/postprocess/path_simplify.h"
@@ -100,8 +101,8 @@ void WorkingPath::replace(std::vector<Point> path) {
   kept.clear();
 }
 
-void apply_shortcut(const Grid& grid, ShortcutMode mode, const SightRule& sight,
-                    WorkingPath& path) {
+void apply_shortcut(const Grid& grid, ShortcutMode mode, const SightRule& sight, WorkingPath& path,
+                    DeadlinePoller* poll) {
   switch (mode) {
     case ShortcutMode::none:
       return;
@@ -110,25 +111,25 @@ void apply_shortcut(const Grid& grid, ShortcutMode mode, const SightRule& sight,
       return;
     case ShortcutMode::turning_points:
       path.keep(collinear_keep(path.points));
-      path.keep(turning_point_keep(grid, path.points, sight));
+      path.keep(turning_point_keep(grid, path.points, sight, poll));
       return;
     case ShortcutMode::greedy:
       // Collinear nodes first: same shortcuts through the corners, far fewer sight tests.
       path.keep(collinear_keep(path.points));
-      path.keep(greedy_keep(grid, path.points, sight, false));
+      path.keep(greedy_keep(grid, path.points, sight, false, poll));
       return;
     case ShortcutMode::forward: {
       std::vector<Point> refined = path.points;
       insert_midpoints(refined);
-      path.replace(select_points(refined, forward_keep(grid, refined, sight)));
+      path.replace(select_points(refined, forward_keep(grid, refined, sight, poll)));
       return;
     }
     case ShortcutMode::from_goal:
-      path.keep(greedy_keep(grid, path.points, sight, true));
+      path.keep(greedy_keep(grid, path.points, sight, true, poll));
       return;
     case ShortcutMode::direct_midpoint: {
       std::vector<Point> p = path.points;
-      shortcut_direct_midpoint(grid, p, sight);
+      shortcut_direct_midpoint(grid, p, sight, poll);
       path.replace(std::move(p));
       return;
     }
@@ -136,50 +137,64 @@ void apply_shortcut(const Grid& grid, ShortcutMode mode, const SightRule& sight,
 }
 
 void apply_smoothing(const Grid& grid, const PostprocessOptions& options, const SightRule& sight,
-                     WorkingPath& path) {
+                     WorkingPath& path, DeadlinePoller* poll) {
   switch (options.smoothing) {
     case SmoothingMode::none:
       return;
     case SmoothingMode::bezier:
-      path.replace(bezier_corners(grid, path.points, sight, options.bezier));
+      path.replace(bezier_corners(grid, path.points, sight, options.bezier, poll));
       return;
     case SmoothingMode::bspline:
       if (!path.kept.empty()) {
-        path.replace(bspline_smooth(grid, path.dense, path.kept, sight, options.bspline));
+        path.replace(bspline_smooth(grid, path.dense, path.kept, sight, options.bspline, poll));
       } else {
         std::vector<int> all(path.points.size());
         for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-        path.replace(bspline_smooth(grid, path.points, std::move(all), sight, options.bspline));
+        path.replace(
+            bspline_smooth(grid, path.points, std::move(all), sight, options.bspline, poll));
       }
       return;
   }
 }
 
+void fail_postprocessing(PlanResult& result, const char* step) {
+  result.failure = Failure::limit;
+  result.message = std::string("deadline passed during the ") + step;
+  result.path.clear();
+}
+
 void finish_path(const Grid& grid, const PostprocessOptions& options, WorkingPath& path,
-                 PlanResult& result) {
+                 PlanResult& result, const Deadline& deadline) {
   result.extra.emplace_back("key_points", static_cast<double>(path.points.size()));
   result.waypoints_before_sampling = static_cast<std::int64_t>(path.points.size());
   if (options.smoothing != SmoothingMode::none) {
     PhaseTimer timer(result, "smoothing");
-    apply_smoothing(grid, options, sight_rule(result.rule, options.curve_clearance), path);
+    DeadlinePoller poll = postprocess_poller(deadline);
+    apply_smoothing(grid, options, sight_rule(result.rule, options.curve_clearance), path, &poll);
+    if (poll.has_expired()) return fail_postprocessing(result, "smoothing");
   }
   result.path = std::move(path.points);
 }
 
-void apply_postprocessing(const Grid& grid, const PostprocessOptions& options, PlanResult& result) {
-  apply_postprocessing(grid, options, sight_rule(result.rule, options.shortcut_margin), result);
+void apply_postprocessing(const Grid& grid, const PostprocessOptions& options, PlanResult& result,
+                          const Deadline& deadline) {
+  apply_postprocessing(grid, options, sight_rule(result.rule, options.shortcut_margin), result,
+                       deadline);
 }
 
 void apply_postprocessing(const Grid& grid, const PostprocessOptions& options,
-                          const SightRule& shortcut_sight, PlanResult& result) {
+                          const SightRule& shortcut_sight, PlanResult& result,
+                          const Deadline& deadline) {
   if (!result.ok()) return;
   if (options.shortcut == ShortcutMode::none && options.smoothing == SmoothingMode::none) return;
   WorkingPath path(std::move(result.path));
   if (options.shortcut != ShortcutMode::none) {
     PhaseTimer timer(result, "postprocess");
-    apply_shortcut(grid, options.shortcut, shortcut_sight, path);
+    DeadlinePoller poll = postprocess_poller(deadline);
+    apply_shortcut(grid, options.shortcut, shortcut_sight, path, &poll);
+    if (poll.has_expired()) return fail_postprocessing(result, "shortcut");
   }
-  finish_path(grid, options, path, result);
+  finish_path(grid, options, path, result, deadline);
 }
 
 }  // namespace agv

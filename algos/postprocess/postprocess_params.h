@@ -70,24 +70,40 @@ struct WorkingPath {
   void replace(std::vector<Point> path);
 };
 
-void apply_shortcut(const Grid& grid, ShortcutMode mode, const SightRule& sight, WorkingPath& path);
+// `poll`: the steps' deadline (path_simplify.h, path_curves.h); an expired one leaves `path`
+// unfinished, for the caller to discard.
+void apply_shortcut(const Grid& grid, ShortcutMode mode, const SightRule& sight, WorkingPath& path,
+                    DeadlinePoller* poll = nullptr);
 // `sight`: the rule the curve must be free under (the planner's cells rule).
 void apply_smoothing(const Grid& grid, const PostprocessOptions& options, const SightRule& sight,
-                     WorkingPath& path);
+                     WorkingPath& path, DeadlinePoller* poll = nullptr);
+
+// Sight tests (or points, corners) between two polls of the deadline in post-processing.
+inline constexpr std::int64_t kPostprocessPollInterval = 16;
+// A poller of the plan's deadline for post-processing steps.
+inline DeadlinePoller postprocess_poller(const Deadline& deadline) {
+  return DeadlinePoller(deadline, kPostprocessPollInterval);
+}
+// Makes `result` the limit failure of a plan whose post-processing step `step` the deadline cut.
+void fail_postprocessing(PlanResult& result, const char* step);
 
 // The last step of every pipeline: records the waypoint count before curve sampling as the extra
 // metric "key_points", applies the smoothing (phase "smoothing") under the result's corner rule
-// and `curve_clearance`, and moves the polyline into result.path.
+// and `curve_clearance`, and moves the polyline into result.path. A deadline that expires during
+// the smoothing makes the result a limit failure.
 void finish_path(const Grid& grid, const PostprocessOptions& options, WorkingPath& path,
-                 PlanResult& result);
+                 PlanResult& result, const Deadline& deadline);
 
 // Both steps on a successful search result, under its corner rule, timed as the phases
 // "postprocess" (shortcut) and "smoothing"; a failed result, or options that ask for nothing,
 // leave the result alone. The shortcut tests sight under sight_rule(rule, shortcut_margin).
-void apply_postprocessing(const Grid& grid, const PostprocessOptions& options, PlanResult& result);
+// Both steps poll `deadline` (the plan's): when it expires the result is a limit failure.
+void apply_postprocessing(const Grid& grid, const PostprocessOptions& options, PlanResult& result,
+                          const Deadline& deadline);
 // The same with the shortcut's sight test given: a paper's own clearance rule (MA*'s obstacle
 // circles of radius r_obs, paper 000 eq. 5.1b). The smoothing still tests under the cells rule.
 void apply_postprocessing(const Grid& grid, const PostprocessOptions& options,
-                          const SightRule& shortcut_sight, PlanResult& result);
+                          const SightRule& shortcut_sight, PlanResult& result,
+                          const Deadline& deadline);
 
 }  // namespace agv

@@ -37,6 +37,7 @@ class BirrtPlanner final : public Planner {
     int meet_a = -1;
     int meet_b = -1;
     long long iterations = 0;
+    long long connect_steps = 0;
     bool timed_out = false;
     {
       PhaseTimer timer(result, "search");
@@ -55,11 +56,17 @@ class BirrtPlanner final : public Planner {
         const Extension e = a->extend(grid, target, settings_.step, settings_.sight);
         if (e.status != ExtendStatus::trapped) {
           const Point q = a->point(e.node);
-          // CONNECT: ends within ceil(distance / step) extensions, each one step closer.
+          // CONNECT: ends within ceil(distance / step) extensions, each one step closer, which
+          // with a small step on a large map is many: the deadline is polled among them too.
           Extension c;
           do {
+            if (++connect_steps % kSamplingDeadlineInterval == 0 && request.deadline.expired()) {
+              timed_out = true;
+              break;
+            }
             c = b->extend(grid, q, settings_.step, settings_.sight);
           } while (c.status == ExtendStatus::advanced);
+          if (timed_out) break;
           if (c.status == ExtendStatus::reached) {
             meet_a = e.node;
             meet_b = c.node;

@@ -23,6 +23,9 @@ namespace {
 // ends with fewer samples instead of looping (expected draws per sample: 1 / free fraction).
 constexpr long long kMaxDrawsPerSample = 64;
 
+// Deadline poll period of the roadmap's plain linear passes (a few instructions per element).
+constexpr std::size_t kLinearPassPollInterval = 4096;
+
 constexpr int kStartNode = 0;
 constexpr int kGoalNode = 1;
 
@@ -34,9 +37,12 @@ struct PrmScratch {
   std::vector<Point> points;
   std::vector<std::uint32_t> knn_index;
   std::vector<double> knn_d2;
-  std::vector<std::uint64_t> pairs;  // candidate edges (lo << 32 | hi), lo < hi
-  std::vector<std::uint64_t> edges;  // the free ones
-  std::vector<int> offsets;          // CSR adjacency
+  std::vector<std::uint64_t> pairs;      // candidate edges (lo << 32 | hi), lo < hi
+  std::vector<std::size_t> pair_start;   // the candidates bucketed by lo: CSR offsets
+  std::vector<std::size_t> pair_cursor;  // filling cursors
+  std::vector<std::uint32_t> pair_hi;    // the candidates' hi ends
+  std::vector<std::uint64_t> edges;      // the free ones
+  std::vector<int> offsets;              // CSR adjacency
   std::vector<int> targets;
   std::vector<double> dist;
   std::vector<int> parent;
@@ -92,14 +98,16 @@ class PrmPlanner final : public Planner {
       result.message = "deadline passed while building the roadmap";
       return result;
     }
-    bool found = false;
+    Search found = Search::no_path;
     {
       PhaseTimer timer(result, "search");
-      found = shortest_path(s);
+      found = shortest_path(s, request.deadline);
     }
-    if (!found) {
+    if (found != Search::found) {
       result.failure = Failure::limit;
-      result.message = "the roadmap does not connect start and goal (too few samples?)";
+      result.message = found == Search::deadline
+                           ? "deadline passed during the roadmap search"
+                           : "the roadmap does not connect start and goal (too few samples?)";
       return result;
     }
     result.failure = Failure::none;
@@ -140,13 +148,17 @@ class PrmPlanner final : public Planner {
 
     const std::size_t n = s.points.size();
     const PointCloud cloud{&s.points};
+    // The k-d tree's construction (O(n log n) inside nanoflann) is the one step that cannot
+    // poll; the deadline is polled right after it.
     const KdTree tree(2, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+    if (request.deadline.expired()) return false;
     const std::size_t want = std::min(k_ + 1, n);  // + 1: the query point finds itself
     s.knn_index.resize(want);
     s.knn_d2.resize(want);
     const double radius2 = radius_ * radius_;
     s.pairs.clear();
     for (std::size_t i = 0; i < n; ++i) {
+      if (i % kSamplingDeadlineInterval == 0 && request.deadline.expired()) return false;
       const double query[2] = {s.points[i].x, s.points[i].y};
       const std::size_t found = tree.knnSearch(query, want, s.knn_index.data(), s.knn_d2.data());
       for (std::size_t m = 0; m < found; ++m) {
@@ -158,8 +170,7 @@ class PrmPlanner final : public Planner {
       }
     }
     // An edge found from both ends is checked once.
-    std::sort(s.pairs.begin(), s.pairs.end());
-    s.pairs.erase(std::unique(s.pairs.begin(), s.pairs.end()), s.pairs.end());
+    if (!sort_unique_pairs(s, n, request.deadline)) return false;
 
     s.edges.clear();
     s.offsets.assign(n + 1, 0);
@@ -173,11 +184,16 @@ class PrmPlanner final : public Planner {
       ++s.offsets[a + 1];
       ++s.offsets[b + 1];
     }
-    for (std::size_t i = 0; i < n; ++i) s.offsets[i + 1] += s.offsets[i];
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i % kLinearPassPollInterval == 0 && request.deadline.expired()) return false;
+      s.offsets[i + 1] += s.offsets[i];
+    }
     s.targets.resize(static_cast<std::size_t>(s.offsets[n]));
     // Fill with a running cursor per node (`parent` is unused until the search: the cursors).
     s.parent.assign(s.offsets.begin(), s.offsets.end() - 1);
-    for (const std::uint64_t pair : s.edges) {
+    for (std::size_t e = 0; e < s.edges.size(); ++e) {
+      if (e % kLinearPassPollInterval == 0 && request.deadline.expired()) return false;
+      const std::uint64_t pair = s.edges[e];
       const auto a = static_cast<int>(pair >> 32);
       const auto b = static_cast<int>(pair & 0xFFFFFFFFU);
       s.targets[static_cast<std::size_t>(s.parent[static_cast<std::size_t>(a)]++)] = b;
@@ -188,8 +204,45 @@ class PrmPlanner final : public Planner {
     return true;
   }
 
+  // s.pairs sorted and without repeats, as std::sort and std::unique would leave them, by a
+  // counting sort on the lower end and a sort of each (small: a node's neighbours and those
+  // that have it among theirs) bucket, so that the deadline is polled throughout. False when it
+  // passed.
+  static bool sort_unique_pairs(PrmScratch& s, std::size_t n, const Deadline& deadline) {
+    const std::size_t m = s.pairs.size();
+    s.pair_start.assign(n + 1, 0);
+    for (std::size_t e = 0; e < m; ++e) {
+      if (e % kLinearPassPollInterval == 0 && deadline.expired()) return false;
+      ++s.pair_start[(s.pairs[e] >> 32) + 1];
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i % kLinearPassPollInterval == 0 && deadline.expired()) return false;
+      s.pair_start[i + 1] += s.pair_start[i];
+    }
+    s.pair_hi.resize(m);
+    s.pair_cursor.assign(s.pair_start.begin(), s.pair_start.end() - 1);
+    for (std::size_t e = 0; e < m; ++e) {
+      if (e % kLinearPassPollInterval == 0 && deadline.expired()) return false;
+      const std::uint64_t pair = s.pairs[e];
+      s.pair_hi[s.pair_cursor[pair >> 32]++] = static_cast<std::uint32_t>(pair & 0xFFFFFFFFU);
+    }
+    s.pairs.clear();
+    for (std::size_t lo = 0; lo < n; ++lo) {
+      if (lo % kSamplingDeadlineInterval == 0 && deadline.expired()) return false;
+      const auto first = s.pair_hi.begin() + static_cast<std::ptrdiff_t>(s.pair_start[lo]);
+      const auto last = s.pair_hi.begin() + static_cast<std::ptrdiff_t>(s.pair_start[lo + 1]);
+      std::sort(first, last);
+      for (auto it = first; it != last; ++it)
+        if (it == first || *it != *(it - 1))
+          s.pairs.push_back(static_cast<std::uint64_t>(lo) << 32 | *it);
+    }
+    return true;
+  }
+
+  enum class Search { found, no_path, deadline };
+
   // Dijkstra on the roadmap (binary heap, lazy deletion; ties to the lower node index).
-  static bool shortest_path(PrmScratch& s) {
+  static Search shortest_path(PrmScratch& s, const Deadline& deadline) {
     const std::size_t n = s.points.size();
     s.dist.assign(n, std::numeric_limits<double>::infinity());
     s.parent.assign(n, -1);
@@ -197,13 +250,14 @@ class PrmPlanner final : public Planner {
     const auto later = std::greater<std::pair<double, int>>();
     s.dist[kStartNode] = 0.0;
     s.heap.emplace_back(0.0, kStartNode);
-    while (!s.heap.empty()) {
+    for (std::int64_t popped = 0; !s.heap.empty(); ++popped) {
+      if (popped % kSamplingDeadlineInterval == 0 && deadline.expired()) return Search::deadline;
       std::pop_heap(s.heap.begin(), s.heap.end(), later);
       const auto [d, u] = s.heap.back();
       s.heap.pop_back();
       const auto su = static_cast<std::size_t>(u);
       if (d > s.dist[su]) continue;  // stale entry
-      if (u == kGoalNode) return true;
+      if (u == kGoalNode) return Search::found;
       for (int e = s.offsets[su]; e < s.offsets[su + 1]; ++e) {
         const int v = s.targets[static_cast<std::size_t>(e)];
         const auto sv = static_cast<std::size_t>(v);
@@ -216,7 +270,7 @@ class PrmPlanner final : public Planner {
         }
       }
     }
-    return false;
+    return Search::no_path;
   }
 
   long long samples_;

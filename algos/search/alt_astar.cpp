@@ -101,7 +101,7 @@ class AltAStarPlanner final : public Planner {
         policy.weight = rate_weight(*policy.sat, request.start, request.goal, o_.max_weight);
     }
     PlanResult result = plan_grid_search(request, o_.search.setup, policy);
-    apply_postprocessing(request.grid, o_.post, result);
+    apply_postprocessing(request.grid, o_.post, result, request.deadline);
     return result;
   }
 

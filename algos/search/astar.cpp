@@ -35,7 +35,7 @@ class AStarPlanner final : public Planner {
           return plan_grid_search(request, o_.search.setup,
                                   AStarPolicy<decltype(h)>(h, request.goal));
         });
-    apply_postprocessing(request.grid, o_.post, result);
+    apply_postprocessing(request.grid, o_.post, result, request.deadline);
     return result;
   }
 

@@ -196,7 +196,7 @@ class BidirAStarPlanner final : public Planner {
                                                        : "the goal is unreachable from the start";
       }
     }
-    apply_postprocessing(request.grid, o_.post, result);
+    apply_postprocessing(request.grid, o_.post, result, request.deadline);
     return result;
   }
 

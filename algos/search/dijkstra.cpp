@@ -31,7 +31,7 @@ class DijkstraPlanner final : public Planner {
   PlanResult plan(const PlanRequest& request) const override {
     PlanResult result = plan_grid_search(request, o_.search.setup,
                                          AStarPolicy<ZeroHeuristic>(ZeroHeuristic{}, request.goal));
-    apply_postprocessing(request.grid, o_.post, result);
+    apply_postprocessing(request.grid, o_.post, result, request.deadline);
     return result;
   }
 

@@ -109,16 +109,23 @@ class ImprovedAStarPlanner final : public Planner {
       PhaseTimer timer(result, "postprocess");
       const SightRule sight = SightRule::cells(o_.search.setup.rule);
       const double search_length = polyline_length_cells(path.points);
-      apply_shortcut(request.grid, ShortcutMode::forward, sight, path);  // steps 1-2
+      DeadlinePoller poll = postprocess_poller(request.deadline);
+      apply_shortcut(request.grid, ShortcutMode::forward, sight, path, &poll);  // steps 1-2
       // Step 3 (eq. 12-13), paper 002's own: it moves and inserts points, a detour around the
       // obstacles that may lengthen the shortcut polyline but never beyond the search path it
       // refines (docs/PLANNERS.md "Improved A*").
       std::vector<Point> keys = path.points;
-      avoid_obstacles(request.grid, keys, sight, o_.avoid_offset, o_.avoid_near,
-                      o_.avoid_capped ? search_length : std::numeric_limits<double>::infinity());
+      if (!poll.has_expired())
+        avoid_obstacles(request.grid, keys, sight, o_.avoid_offset, o_.avoid_near,
+                        o_.avoid_capped ? search_length : std::numeric_limits<double>::infinity(),
+                        &poll);
+      if (poll.has_expired()) {
+        fail_postprocessing(result, "obstacle-avoidance adjustment");
+        return result;
+      }
       path.replace(std::move(keys));
     }
-    finish_path(request.grid, o_.post, path, result);  // step 4: Bezier corners
+    finish_path(request.grid, o_.post, path, result, request.deadline);  // step 4: Bezier corners
     return result;
   }
 

@@ -120,7 +120,8 @@ class KinAStarPlanner final : public Planner {
       result.extra.emplace_back("generated_nodes", static_cast<double>(generated.count));
     // Section 2.3, then 2.4 (B-spline). The safety distance is a margin test even at 0.
     apply_postprocessing(request.grid, o_.post,
-                         SightRule::margin(o_.post.shortcut_margin, o_.search.setup.rule), result);
+                         SightRule::margin(o_.post.shortcut_margin, o_.search.setup.rule), result,
+                         request.deadline);
     return result;
   }
 

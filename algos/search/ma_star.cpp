@@ -50,7 +50,7 @@ class MaStarPlanner final : public Planner {
         request, o_.search.setup,
         MaStarPolicy(request.start, request.goal, o_.g_mode == MaStarG::euclid_from_start));
     apply_postprocessing(request.grid, o_.post, SightRule::circles(o_.r_obs, o_.search.setup.rule),
-                         result);
+                         result, request.deadline);
     return result;
   }
 

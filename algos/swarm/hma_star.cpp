@@ -92,7 +92,9 @@ class WindowSwarm {
       : grid_(grid), sight_(sight), pso_(pso), rng_(rng), s_(s) {}
 
   // The best point found for the middle of a - ? - b and its cost (+inf when none is feasible).
-  Point run(Point a, Point b, double& best_cost) {
+  // `poll` is polled once per iteration; when it expires the swarm stops where it is (the
+  // caller, seeing poll.has_expired(), gives up the plan).
+  Point run(Point a, Point b, double& best_cost, DeadlinePoller& poll) {
     a_ = a;
     b_ = b;
     const double w = grid_.width();
@@ -116,6 +118,7 @@ class WindowSwarm {
     gbest_cost_ = kInf;
 
     for (int j = 1; j <= pso_.iterations; ++j) {
+      if (poll.expired()) break;
       const double previous = gbest_cost_;
       // Line 23. Without opposition only a particle shorter than its pbest can change anything.
       lengths(s_.x, s_.length);
@@ -295,31 +298,39 @@ class HmaStarPlanner final : public Planner {
     int windows = 0;
     int improvements = 0;
     std::int64_t evaluations = 0;
+    bool cut = false;
     {
       PhaseTimer timer(result, "pso");
       HmaScratch& scratch = request.scratch.get<HmaScratch>();
       std::vector<Point>& path = result.path;
       WindowSwarm swarm(request.grid, sight_, pso_, request.rng, scratch);
-      for (std::size_t n = 0; n + 2 < path.size(); ++n) {
-        if (request.deadline.expired()) {
-          PlanResult f = PlanResult::failed(Failure::limit, "time limit");
-          f.work = result.work;
-          f.work.pso_evaluations = swarm.evaluations();
-          return f;
-        }
+      // Polled per window, per swarm iteration and by the final removal's sight tests.
+      DeadlinePoller poll(request.deadline, 1);
+      for (std::size_t n = 0; n + 2 < path.size() && !poll.expired(); ++n) {
         const double current =
             point_distance(path[n], path[n + 1]) + point_distance(path[n + 1], path[n + 2]);
         double best = kInf;
-        const Point candidate = swarm.run(path[n], path[n + 2], best);
+        const Point candidate = swarm.run(path[n], path[n + 2], best, poll);
+        if (poll.has_expired()) break;
         ++windows;
         if (best < current - kMinGain) {
           path[n + 1] = candidate;
           ++improvements;
         }
       }
-      remove_collinear(path);
-      remove_turning_points(request.grid, path, sight_);
+      if (!poll.has_expired()) {
+        remove_collinear(path);
+        remove_turning_points(request.grid, path, sight_, &poll);
+      }
+      cut = poll.has_expired();
       evaluations = swarm.evaluations();
+    }
+    if (cut) {
+      PlanResult f = PlanResult::failed(Failure::limit, "time limit");
+      f.work = result.work;
+      f.work.pso_evaluations = evaluations;
+      f.phases = std::move(result.phases);
+      return f;
     }
     // MA*'s counts describe its own path; the swarm step re-placed and dropped waypoints, so
     // the counts are those of the path returned (docs/METRICS.md waypoints).

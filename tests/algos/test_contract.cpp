@@ -11,6 +11,10 @@
 // - a walled-off goal gives no_path (proves_no_path) or limit (the others give up);
 // - an expired deadline gives limit; one that expires at poll n + 1 of a run that would poll more
 //   gives limit after at most kFurtherPolls more polls (Deadline::after_polls, deterministic);
+// - with parameters that make every phase of a plan long (many samples, iterations, a large maze,
+//   a shortcut and a curve), every phase the plan reports polls the deadline: for each phase
+//   some poll expires inside it, and the plan then stops there with limit within kFurtherPolls
+//   more polls and no more work than the whole plan's;
 // - a start or goal outside the grid or on an obstacle gives invalid_input;
 // - the same seed gives the same result, twice in a row and with a fresh Scratch;
 // - the waypoint count a planner reports is that of the path it returns (or of the polyline
@@ -327,6 +331,90 @@ TEST_P(PlannerContract, DeadlineExpiringMidPlanGivesLimitPromptly) {
   }
   // Without a run long enough to poll twice this check would have checked nothing.
   EXPECT_EQ(checked, kMidPlanMaps);
+}
+
+// The planner's parameters for a long plan: every budget large and, for a path planner, its most
+// expensive shortcut and a curve, so that every phase it has does real work.
+nlohmann::json long_plan_params(const PlannerInfo& info) {
+  nlohmann::json params = nlohmann::json::object();
+  for (const ParamSpec& spec : info.params) {
+    const auto has = [&](const char* choice) {
+      return std::find(spec.choices.begin(), spec.choices.end(), choice) != spec.choices.end();
+    };
+    if (spec.name == "samples") params["samples"] = 20000;
+    if (spec.name == "max_iterations") params["max_iterations"] = 50000;
+    if (spec.name == "step") params["step"] = 0.5;
+    if (info.kind == PlannerKind::local) continue;  // a fusion's `smoothing` is its DWA's
+    if (spec.name == "shortcut" && has("greedy")) params["shortcut"] = "greedy";
+    if (spec.name == "smoothing" && has("bspline")) params["smoothing"] = "bspline";
+  }
+  return params;
+}
+
+// The phase a plan cut short was in: the last it reports (cpu_ns_per_step is a fusion run's
+// per-step statistic, reported with the phases after its control loop's, not a phase).
+std::string last_phase(const PlanResult& r) {
+  for (auto it = r.phases.rbegin(); it != r.phases.rend(); ++it)
+    if (it->name != "cpu_ns_per_step") return it->name;
+  return "";
+}
+
+TEST_P(PlannerContract, DeadlineCutsEveryPhaseOfALongPlan) {
+  const ConfiguredPlanner configured =
+      configure_planner(info().name, long_plan_params(info()), "contract");
+  // The largest nearly perfect maze of mid_plan_maps(): one long winding path.
+  const MapInstance& m = mid_plan_maps().back();
+  const int seed = 1;
+  const auto plan = [&](Deadline deadline) {
+    Rng rng(7, static_cast<std::uint64_t>(seed));
+    return plan_checked(*configured.planner,
+                        PlanRequest{m.grid, m.start, m.goal, rng, scratch_, std::move(deadline)});
+  };
+  const Deadline counting = Deadline::after_polls(std::numeric_limits<std::int64_t>::max());
+  const PlanResult full = plan(counting);
+  const std::int64_t total = counting.polls();
+  std::vector<std::string> phases;
+  for (const PhaseTime& p : full.phases)
+    if (p.name != "cpu_ns_per_step") phases.push_back(p.name);
+  SCOPED_TRACE(describe(m, seed) + ", parameters " + long_plan_params(info()).dump() + ", " +
+               std::to_string(total) + " polls, phases " + nlohmann::json(phases).dump());
+  ASSERT_FALSE(phases.empty());
+  ASSERT_GE(total, static_cast<std::int64_t>(phases.size()));
+
+  // The run cut at poll allowed + 1: limit, promptly, with no more work than the whole run.
+  const auto cut = [&](std::int64_t allowed) {
+    const Deadline deadline = Deadline::after_polls(allowed);
+    PlanResult r = plan(deadline);
+    SCOPED_TRACE("expires at poll " + std::to_string(allowed + 1) + " of " + std::to_string(total) +
+                 " in phase " + last_phase(r) + ": " + r.message);
+    EXPECT_EQ(to_string(r.failure), std::string("limit"));
+    EXPECT_GT(deadline.polls(), allowed);
+    EXPECT_LE(deadline.polls(), allowed + 1 + kFurtherPolls);
+    for (const auto& [name, value] : work_counter_values(r.work))
+      for (const auto& [full_name, full_value] : work_counter_values(full.work))
+        if (std::string(name) == full_name) {
+          EXPECT_LE(value, full_value) << name;
+        }
+    return r;
+  };
+  const auto phase_index = [&](const PlanResult& r) {
+    const auto it = std::find(phases.begin(), phases.end(), last_phase(r));
+    return static_cast<std::size_t>(it - phases.begin());  // phases.size(): none of them
+  };
+  // A cut later in the run is in the same phase or a later one (the run up to the expiring poll
+  // is the uncut run's), so a binary search finds the first poll of each phase; it must lie in
+  // that phase, not in the next: every phase polls.
+  for (std::size_t p = 0; p < phases.size(); ++p) {
+    std::int64_t lo = 0, hi = total - 1;  // the first allowed whose cut is in phase >= p
+    while (lo < hi) {
+      const std::int64_t mid = lo + (hi - lo) / 2;
+      if (phase_index(cut(mid)) >= p)
+        hi = mid;
+      else
+        lo = mid + 1;
+    }
+    EXPECT_EQ(last_phase(cut(lo)), phases[p]) << "phase " << phases[p] << " never polls";
+  }
 }
 
 TEST_P(PlannerContract, EndpointOutsideTheGridOrBlockedIsRefused) {

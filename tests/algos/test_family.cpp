@@ -409,7 +409,7 @@ TEST(Postprocess, AStarAndDijkstraTakeThePostprocessingParameters) {
       const PlanResult base = run(plain, m, scratch);
       ASSERT_TRUE(base.ok()) << name << " map " << i;
       PlanResult expected = base;
-      apply_postprocessing(m.grid, options, expected);
+      apply_postprocessing(m.grid, options, expected, Deadline::never());
       const PlanResult r = run(post, m, scratch);
       ASSERT_TRUE(r.ok()) << name << " map " << i;
       EXPECT_EQ(r.path, expected.path) << name << " map " << i;

@@ -60,7 +60,7 @@ tsan_tbb() {
   echo "sanitize: built libtbb $ver with TSan in $dir/install"
 }
 
-asan_exclude='MovingAiScenarios|^ReferenceBounds\.|^AnyAngle\.MovingAi|^Fusion\.ReachesTheGoalOnRandomSolvableMaps$|^HmaStar\.SoundOnPaperMapsAndPairedAgainstAStar$|^Sweep\.ReportIsIdenticalOnOneAndTwoThreads$'
+asan_exclude='MovingAiScenarios|^ReferenceBounds\.|^AnyAngle\.MovingAi|^Fusion\.ReachesTheGoalOnRandomSolvableMaps$|^HmaStar\.SoundOnPaperMapsAndPairedAgainstAStar$|^Sweep\.ReportIsIdenticalOnOneAndTwoThreads$|^Fusion\.AllThreeVariantsRunWithMovingAndUnknownObstacles$|^Fusion\.RunMetricsCoverTheUnknownCellsAndTakeTheSimulatedTime$|^Fusion\.LocalGoalsAreTheKeyNodesOrTheCurveSamples$|^FusionSweep\.ReportIsIdenticalOnOneAndTwoThreads$|^cli_resume_interrupt$'
 
 for part in "${parts[@]}"; do
   start=$(date +%s)
@@ -75,8 +75,12 @@ for part in "${parts[@]}"; do
       # random maps (9 min), HMA* on the papers' maps (3 min), the any-angle bound over 2,160 maps and
       # every planner (34 s in Release) and over whole MovingAI maps, and the 1-vs-2-thread sweep of
       # the whole default planner set (killed at 464 s on 2 cores; that determinism runs in the
-      # plain suite, and the sweep suite runs under TSan below). The same code runs under ASan
-      # in the smaller tests of each suite.
+      # plain suite, and the sweep suite runs under TSan below); and, measured at 100-250 s each
+      # under ASan on 2 cores (2026-12-02), the fusion planners' three simulation suites and their
+      # 1-vs-2-thread sweep, and the CLI resume script's sweeps of 1,200 maps (resume runs under
+      # ASan in cli_interrupt_isolated, cli_shard_merge and the sweep suite). The same code runs
+      # under ASan in the smaller tests of each suite (Fusion.SameSeedSameTrajectory, the fusion
+      # planners' contract tests, ...).
       ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
         ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE long \

@@ -12,21 +12,13 @@
 #include "engine/map_task.h"
 #include "engine/sweep_config.h"
 #include "engine/validator.h"
+#include "tests/engine/config_error.h"
 #include "tests/engine/for_each_run.h"
 
 namespace agv {
 namespace {
 
 using nlohmann::json;
-
-std::string config_error(const json& j) {
-  try {
-    parse_config(j);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 json small_sweep(json collision, json planners) {
   json j = {{"name", "model"},

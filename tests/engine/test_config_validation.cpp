@@ -13,21 +13,13 @@
 #include "engine/sweep_config.h"
 #include "engine/sweep_plan.h"
 #include "engine/sweep_runner.h"
+#include "tests/engine/config_error.h"
 
 namespace agv {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-std::string parse_error(const json& j) {
-  try {
-    parse_config(j);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
 
 // The config text in a file of its own, loaded as `agvbench run` and `validate` load it.
 std::string load_error(const std::string& text) {
@@ -49,19 +41,19 @@ const json kSmall = {
 
 // Class 5: what make_map refuses for one size is refused at load for every size.
 TEST(ConfigValidation, MapOptionsAreCheckedForEverySize) {
-  ASSERT_EQ(parse_error(kSmall), "no error");
+  ASSERT_EQ(config_error(kSmall), "no error");
   json j = kSmall;
   j["map"] = {{"endpoints", "random"}, {"min_distance", 40}};  // fits 64x64, not 16x16
-  const std::string e = parse_error(j);
+  const std::string e = config_error(j);
   EXPECT_NE(e.find("map.min_distance: 40 is outside [0, 21.2132]"), std::string::npos) << e;
   EXPECT_NE(e.find("sizes[0] (16x16)"), std::string::npos) << e;
   j["map"]["min_distance"] = 20;
-  EXPECT_EQ(parse_error(j), "no error");
+  EXPECT_EQ(config_error(j), "no error");
 
   j = kSmall;
   j["sizes"] = {64, {64, 16}};
   j["generators"] = {{{"name", "maze"}, {"params", {{"corridor", 20}}}}};
-  const std::string maze = parse_error(j);
+  const std::string maze = config_error(j);
   EXPECT_NE(maze.find("generators[0].params.corridor: 20 is outside [1, 16]"), std::string::npos)
       << maze;
 }
@@ -82,7 +74,7 @@ TEST(ConfigValidation, SweepTooLargeForMemoryIsRefused) {
   j["sizes"] = sizes;
   j["maps_per_cell"] = 10000000;  // 10^10 map tasks: terabytes of slots
   ASSERT_GT(usable_memory_bytes(), 0.0);
-  const std::string e = parse_error(j);
+  const std::string e = config_error(j);
   EXPECT_EQ(e.rfind("maps_per_cell: 10000000 maps in each of 1000 cells", 0), 0u) << e;
   EXPECT_NE(e.find("lower maps_per_cell"), std::string::npos) << e;
 
@@ -134,23 +126,23 @@ TEST(ConfigValidation, DuplicateKeysAreRefusedWithTheirLine) {
 TEST(ConfigValidation, DuplicateAxisValuesAreRefused) {
   json j = kSmall;
   j["sizes"] = {16, {16, 16}};
-  std::string e = parse_error(j);
+  std::string e = config_error(j);
   EXPECT_NE(e.find("sizes[1]: 16x16 is also sizes[0]"), std::string::npos) << e;
   j = kSmall;
   j["densities"] = {0.1, 0.2, 0.10000000001};
-  e = parse_error(j);
+  e = config_error(j);
   EXPECT_NE(e.find("densities[2]: 0.10000000001 names the same cells as densities[0] (0.1)"),
             std::string::npos)
       << e;
   j["densities"] = {0.1, 0.1000000001};  // differs in the 10th digit: two cells, two keys
-  EXPECT_EQ(parse_error(j), "no error");
+  EXPECT_EQ(config_error(j), "no error");
   j = kSmall;
   j["generators"] = {"uniform", "uniform"};
-  EXPECT_NE(parse_error(j).find("generators[1]: generator \"uniform\" appears twice"),
+  EXPECT_NE(config_error(j).find("generators[1]: generator \"uniform\" appears twice"),
             std::string::npos);
   j["generators"] = {{{"name", "maze"}, {"params", {{"corridor", 2}}}},
                      {{"name", "maze"}, {"params", {{"corridor", 2}}}}};
-  EXPECT_NE(parse_error(j).find("generators[1]: generator \"maze\" appears twice"),
+  EXPECT_NE(config_error(j).find("generators[1]: generator \"maze\" appears twice"),
             std::string::npos);
   // Every cell key of an accepted config is distinct.
   j = kSmall;
@@ -181,14 +173,14 @@ TEST(ConfigValidation, AbsentAndEmptyObjectsGiveOneDefault) {
 TEST(ConfigValidation, HugeIntegersAreRefusedAsWritten) {
   json j = kSmall;
   j["seed"] = json::parse("18446744073709551615");
-  EXPECT_NE(parse_error(j).find("seed: 18446744073709551615 is outside"), std::string::npos)
-      << parse_error(j);
+  EXPECT_NE(config_error(j).find("seed: 18446744073709551615 is outside"), std::string::npos)
+      << config_error(j);
   j = kSmall;
   j["planners"] = {
       {{"name", "rrt"}, {"params", {{"max_iterations", json::parse("18446744073709551615")}}}}};
-  EXPECT_NE(parse_error(j).find("max_iterations: 18446744073709551615 is outside"),
+  EXPECT_NE(config_error(j).find("max_iterations: 18446744073709551615 is outside"),
             std::string::npos)
-      << parse_error(j);
+      << config_error(j);
 }
 
 // Class 8: command-line numbers, the whole text one number in the config's range.

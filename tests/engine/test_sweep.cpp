@@ -12,6 +12,7 @@
 #include "engine/sweep_plan.h"
 #include "engine/sweep_runner.h"
 #include "generators/registry.h"
+#include "tests/engine/config_error.h"
 
 namespace agv {
 namespace {
@@ -142,37 +143,27 @@ TEST(Sweep, AtomicWriteLeavesNoTemporaryFile) {
   fs::remove_all(dir);
 }
 
-// parse_config's error message for j, or "no error".
-std::string message(const json& j) {
-  try {
-    parse_config(j);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(Config, ErrorsNameTheField) {
   const json base = {{"planners", {"astar"}}, {"sizes", {16}}};
-  EXPECT_EQ(message(base), "no error");
+  EXPECT_EQ(config_error(base), "no error");
   json j = base;
   j["densities"] = {0.1, 2.0};
-  EXPECT_NE(message(j).find("densities[1]"), std::string::npos);
+  EXPECT_NE(config_error(j).find("densities[1]"), std::string::npos);
   j = base;
   j["planners"] = {"astar", "astar"};
-  EXPECT_NE(message(j).find("appears twice"), std::string::npos);
+  EXPECT_NE(config_error(j).find("appears twice"), std::string::npos);
   j = base;
   j["map"] = {{"endpoints", "diagonal"}};
-  EXPECT_NE(message(j).find("map.endpoints"), std::string::npos);
+  EXPECT_NE(config_error(j).find("map.endpoints"), std::string::npos);
   j = base;
   j["generators"] = {"fractal"};
-  EXPECT_NE(message(j).find("generators[0]"), std::string::npos);
+  EXPECT_NE(config_error(j).find("generators[0]"), std::string::npos);
   j = base;
   j["baseline"] = "rrt";
-  EXPECT_NE(message(j).find("baseline"), std::string::npos);
+  EXPECT_NE(config_error(j).find("baseline"), std::string::npos);
   j = base;
   j["sizes"] = {1};
-  EXPECT_NE(message(j).find("sizes[0]"), std::string::npos);
+  EXPECT_NE(config_error(j).find("sizes[0]"), std::string::npos);
 }
 
 TEST(Config, ScopeErrorsNameTheField) {
@@ -180,23 +171,23 @@ TEST(Config, ScopeErrorsNameTheField) {
                      {"densities", {0.1, 0.2}},
                      {"maps_per_cell", 10},
                      {"planners", {"astar", {{"name", "rrt"}, {"only", {{"sizes", {16}}}}}}}};
-  EXPECT_EQ(message(base), "no error");
+  EXPECT_EQ(config_error(base), "no error");
   json j = base;
   j["planners"][1]["only"] = {{"sizes", {20}}};
-  EXPECT_NE(message(j).find("planners[1].only.sizes[0]: not one of the sweep's sizes"),
+  EXPECT_NE(config_error(j).find("planners[1].only.sizes[0]: not one of the sweep's sizes"),
             std::string::npos)
-      << message(j);
+      << config_error(j);
   j["planners"][1]["only"] = {{"densities", {0.1, 0.3}}};
-  EXPECT_NE(message(j).find("planners[1].only.densities[1]"), std::string::npos);
+  EXPECT_NE(config_error(j).find("planners[1].only.densities[1]"), std::string::npos);
   j["planners"][1]["only"] = {{"generators", {"maze"}}};
-  EXPECT_NE(message(j).find("planners[1].only.generators[0]"), std::string::npos);
+  EXPECT_NE(config_error(j).find("planners[1].only.generators[0]"), std::string::npos);
   j["planners"][1]["only"] = {{"maps_per_cell", 11}};
-  EXPECT_NE(message(j).find("planners[1].only.maps_per_cell"), std::string::npos);
+  EXPECT_NE(config_error(j).find("planners[1].only.maps_per_cell"), std::string::npos);
   j["planners"][1]["only"] = {{"maps", 3}};
-  EXPECT_NE(message(j).find("planners[1].only.maps: unknown field"), std::string::npos);
+  EXPECT_NE(config_error(j).find("planners[1].only.maps: unknown field"), std::string::npos);
   j = base;
   j["baseline"] = "rrt";
-  EXPECT_NE(message(j).find("baseline: \"rrt\" has an \"only\" scope"), std::string::npos);
+  EXPECT_NE(config_error(j).find("baseline: \"rrt\" has an \"only\" scope"), std::string::npos);
 }
 
 TEST(Sweep, ScopedPlannerRunsOnlyOnItsCellsAndMapsAndIsPairedThere) {
@@ -257,33 +248,34 @@ TEST(Config, ShapeParamErrorsNameTheField) {
   const json base = {{"generators", {"uniform", {{"name", "rooms"}, {"params", json::object()}}}},
                      {"sizes", {16}},
                      {"planners", {"astar"}}};
-  EXPECT_EQ(message(base), "no error");
+  EXPECT_EQ(config_error(base), "no error");
   json j = base;
   j["generators"][1]["params"] = {{"room_size", 1}};
-  EXPECT_EQ(message(j), "generators[1].params.room_size: 1 is outside [2, 8192]");
+  EXPECT_EQ(config_error(j), "generators[1].params.room_size: 1 is outside [2, 8192]");
   j["generators"][1]["params"] = {{"corridor", 2}};
-  EXPECT_NE(message(j).find("generators[1].params.corridor: unknown parameter"), std::string::npos)
-      << message(j);
-  j["generators"][1] = {{"name", "blocks"}, {"params", {{"block_min", 4}, {"block_max", 3}}}};
-  EXPECT_EQ(message(j), "generators[1].params.block_max: 3 is smaller than block_min (4)");
-  j["generators"][1] = {{"name", "maze"}, {"params", {{"corridor", 17}}}};
-  EXPECT_NE(message(j).find("generators[1].params.corridor: 17 is outside [1, 16]"),
+  EXPECT_NE(config_error(j).find("generators[1].params.corridor: unknown parameter"),
             std::string::npos)
-      << message(j);
+      << config_error(j);
+  j["generators"][1] = {{"name", "blocks"}, {"params", {{"block_min", 4}, {"block_max", 3}}}};
+  EXPECT_EQ(config_error(j), "generators[1].params.block_max: 3 is smaller than block_min (4)");
+  j["generators"][1] = {{"name", "maze"}, {"params", {{"corridor", 17}}}};
+  EXPECT_NE(config_error(j).find("generators[1].params.corridor: 17 is outside [1, 16]"),
+            std::string::npos)
+      << config_error(j);
   j["generators"][1] = {{"name", "maze"}, {"shape", {{"corridor", 2}}}};
-  EXPECT_EQ(message(j), "generators[1].shape: unknown field");
+  EXPECT_EQ(config_error(j), "generators[1].shape: unknown field");
   j["generators"][1] = {{"params", json::object()}};
-  EXPECT_EQ(message(j), "generators[1].name: missing");
+  EXPECT_EQ(config_error(j), "generators[1].name: missing");
   j["generators"][1] = "uniform";
-  EXPECT_NE(message(j).find("generators[1]: generator \"uniform\" appears twice"),
+  EXPECT_NE(config_error(j).find("generators[1]: generator \"uniform\" appears twice"),
             std::string::npos);
   j["generators"][1] = 3;
-  EXPECT_NE(message(j).find("generators[1]: expected a generator name"), std::string::npos);
+  EXPECT_NE(config_error(j).find("generators[1]: expected a generator name"), std::string::npos);
 }
 
 TEST(Config, ShapeParamInMapSaysWhereItGoes) {
   const json j = {{"generators", {"rooms"}}, {"planners", {"astar"}}, {"map", {{"room_size", 6}}}};
-  EXPECT_EQ(message(j),
+  EXPECT_EQ(config_error(j),
             "map.room_size: a shape parameter of generator \"rooms\"; it now goes in that "
             "generator's entry: \"generators\": [{\"name\": \"rooms\", \"params\": "
             "{\"room_size\": 6}}]");

@@ -18,7 +18,9 @@ namespace {
   throw InputError(what + " \"" + path + "\": " + reason);
 }
 
-std::string kind_of(mode_t mode) {
+}  // namespace
+
+std::string file_kind(mode_t mode) {
   if (S_ISDIR(mode)) return "a directory";
   if (S_ISFIFO(mode)) return "a FIFO";
   if (S_ISCHR(mode)) return "a character device";
@@ -27,12 +29,10 @@ std::string kind_of(mode_t mode) {
   return "not a regular file";
 }
 
-}  // namespace
-
 void require_regular_file(const std::string& path, const std::string& what) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) fail(path, what, std::strerror(errno));
-  if (!S_ISREG(st.st_mode)) fail(path, what, kind_of(st.st_mode) + ", not a regular file");
+  if (!S_ISREG(st.st_mode)) fail(path, what, file_kind(st.st_mode) + ", not a regular file");
   if (::access(path.c_str(), R_OK) != 0) fail(path, what, std::strerror(errno));
 }
 
@@ -55,7 +55,7 @@ std::string read_text_file(const std::string& path, const std::string& what,
   }
   if (!S_ISREG(st.st_mode)) {
     ::close(fd);
-    fail(path, what, kind_of(st.st_mode) + ", not a regular file");
+    fail(path, what, file_kind(st.st_mode) + ", not a regular file");
   }
   if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) {
     ::close(fd);

@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "core/input_error.h"
+#include "core/text_file.h"
 
 namespace agv {
 
@@ -36,18 +37,10 @@ std::string normalised(const std::string& path) {
   throw InputError(out.what + " \"" + out.path + "\": " + reason);
 }
 
-std::string kind_of(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
 void check_one(const OutputPath& out) {
   const std::optional<struct stat> st = stat_of(out.path);
   if (st) {
-    if (!S_ISREG(st->st_mode)) refuse(out, "is " + kind_of(st->st_mode) + ", not a regular file");
+    if (!S_ISREG(st->st_mode)) refuse(out, "is " + file_kind(st->st_mode) + ", not a regular file");
     if (::access(out.path.c_str(), W_OK) != 0)
       refuse(out, std::string("cannot be written: ") + std::strerror(errno));
     if (out.kind == OutputKind::new_journal && st->st_size > 0)

@@ -71,7 +71,7 @@ refused "config's report folder missing (validate too)" 'report "nowhere/r.json"
   "$bin" validate cn.json
 mkdir adir
 refused "report is a directory" '--out "adir": is a directory' "$bin" run c.json --out adir --quiet
-refused "journal is a device" '--runs-out "/dev/null": is a device' \
+refused "journal is a device" '--runs-out "/dev/null": is a character device' \
   "$bin" run c.json --runs-out /dev/null --quiet
 if [ "$(id -u)" != 0 ]; then
   mkdir ro && chmod 555 ro

@@ -44,7 +44,7 @@ from agvreport import ReportError, density_text  # noqa: E402
 from plot_report import (METRIC_LABELS, TIME, Report, finite, metric_title, nan_or,  # noqa: E402
                          split_list)
 from plot_style import (Saver, log_ticks_both_ends, note_below_legend, setup_matplotlib,  # noqa: E402
-                        side_legend)
+                        side_legend, spaced_ticks)
 
 FORMATS = ("png", "pdf", "svg")
 
@@ -189,24 +189,9 @@ def _pct(v):
     p = (v - 1.0) * 100.0
     if abs(p) < 0.05:
         return "\u00b10%"
-    return f"{p:+.0f}%" if abs(p) >= 10 or abs(p - round(p)) < 0.05 else f"{p:+.1f}%"
-
-
-def spaced_ticks(candidates, a, b, keep=None, most=7):
-    """Ticks of a log axis from `candidates`: both ends and `keep` always, then the others (in
-    order of roundness: 1 x 10^k, then 2 and 5, then the rest) wherever they are at least 1/most
-    of the axis away (in log) from every tick already chosen, so labels never collide."""
-    gap = math.log(b / a) / most if b > a else 1.0
-    chosen = [a, b] + ([keep] if keep is not None and a <= keep <= b else [])
-
-    def roundness(t):
-        m = t / 10 ** math.floor(math.log10(t) + 1e-9)
-        return 0 if abs(m - 1) < 1e-9 else 1 if min(abs(m - 2), abs(m - 5)) < 1e-9 else 2
-    for t in sorted(candidates, key=lambda t: (roundness(t), abs(math.log(t)))):
-        if all(abs(math.log(t / c)) >= gap * 0.999 for c in chosen):
-            chosen.append(t)
-    # An end tick right next to `keep` would collide with it: `keep` wins (1 is the reference).
-    return sorted(set(chosen))
+    if abs(p) >= 10 and (round(p) != -100 or v == 0):  # 0.001 is -99.9%, not -100%
+        return f"{p:+.0f}%"
+    return f"{p:+.0f}%" if abs(p - round(p)) < 0.05 else f"{p:+.1f}%"
 
 
 def ratio_ticks(ax, values):
@@ -293,7 +278,7 @@ def plot_paired(plt, saver, rep, key):
 
 def plot_success(plt, saver, rep):
     gens, sizes = rep.generators, rep.sizes
-    fig, axes = plt.subplots(len(gens), len(sizes), figsize=(3.4 * len(sizes) + 0.4, 2.6 * len(gens) + 0.5),
+    fig, axes = plt.subplots(len(gens), len(sizes), figsize=(3.4 * len(sizes) + 0.4, 3.0 * len(gens) + 0.6),
                              squeeze=False, sharey=True)
     lows = []
     for gi, g in enumerate(gens):
@@ -334,7 +319,7 @@ def plot_time(plt, saver, rep):
     if not rep.has_time() or not rep.wanted(TIME):
         return
     gens, ds = rep.generators, rep.densities
-    fig, axes = plt.subplots(len(gens), len(ds), figsize=(3.1 * len(ds) + 0.5, 2.7 * len(gens) + 0.5),
+    fig, axes = plt.subplots(len(gens), len(ds), figsize=(3.1 * len(ds) + 0.5, 3.0 * len(gens) + 0.6),
                              squeeze=False, sharex=True, sharey=True)
     xticks = [w * h for (w, h) in rep.sizes]
     allv = []

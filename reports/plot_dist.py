@@ -160,7 +160,7 @@ def plot_ecdf(plt, saver, rep, runs):
     if not rep.wanted(TIME):
         return
     gens, sizes = rep.generators, rep.sizes
-    fig, axes = plt.subplots(len(gens), len(sizes), figsize=(3.6 * len(sizes) + 0.4, 2.8 * len(gens) + 0.5),
+    fig, axes = plt.subplots(len(gens), len(sizes), figsize=(3.6 * len(sizes) + 0.4, 3.0 * len(gens) + 0.6),
                              squeeze=False, sharey=True)
     drawn = []
     for gi, g in enumerate(gens):

@@ -100,10 +100,27 @@ def reserve_right(fig, inches):
 # Log axes
 
 
+def spaced_ticks(candidates, a, b, keep=None, most=7):
+    """Ticks of a log axis from `candidates`: both ends and `keep` always, then the others (in
+    order of roundness: 1 x 10^k, then 2 and 5, then the rest) wherever they are at least 1/most
+    of the axis away (in log) from every tick already chosen, so labels never collide."""
+    gap = math.log(b / a) / most if b > a else 1.0
+    chosen = [a, b] + ([keep] if keep is not None and a <= keep <= b else [])
+
+    def roundness(t):
+        m = t / 10 ** math.floor(math.log10(t) + 1e-9)
+        return 0 if abs(m - 1) < 1e-9 else 1 if min(abs(m - 2), abs(m - 5)) < 1e-9 else 2
+    for t in sorted(candidates, key=lambda t: (roundness(t), abs(math.log(t)))):
+        if all(abs(math.log(t / c)) >= gap * 0.999 for c in chosen):
+            chosen.append(t)
+    return sorted(set(chosen))
+
+
 def log_ladder_ticks(lo, hi, most=8):
     """(a, b, ticks) for a log axis over [lo, hi] (both > 0): a and b are the 1-2-5 ladder
     values just outside the data, so the smallest and the largest value both sit under a
-    labelled tick; at most `most` ticks (thinned to decades, then every other one), ends kept."""
+    labelled tick; more than `most` ticks are thinned (spaced_ticks: ends kept, then the
+    roundest values that keep the labels apart)."""
     k_lo, k_hi = math.floor(math.log10(lo)), math.ceil(math.log10(hi))
     ladder = [m * 10.0 ** k for k in range(k_lo - 1, k_hi + 1) for m in LOG_LADDER]
     below = [t for t in ladder if t <= lo * (1 + 1e-12)]
@@ -113,13 +130,7 @@ def log_ladder_ticks(lo, hi, most=8):
         a, b = a / 2, b * 2
     ticks = [t for t in ladder if a * (1 - 1e-9) <= t <= b * (1 + 1e-9)]
     if len(ticks) > most:
-        decades = [t for t in ticks if abs(math.log10(t) - round(math.log10(t))) < 1e-9]
-        ticks = sorted(set([a] + decades + [b]))
-        while len(ticks) > most:
-            inner = ticks[1:-1][1::2]
-            ticks = sorted(set([a] + inner + [b]))
-            if len(inner) <= 1:
-                break
+        ticks = spaced_ticks(ticks, a, b, most=most - 1)
     return a, b, ticks
 
 

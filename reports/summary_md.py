@@ -61,7 +61,7 @@ def success_text(successes, runs, ci=None):
     text = f"{100.0 * successes / runs:.1f}"
     lo, hi = ci if ci else agvreport.wilson(successes, runs)
     if finite(lo) and finite(hi):
-        text += f" [{lo * 100:.0f}, {hi * 100:.0f}]"
+        text += f" [{lo * 100:.1f}, {hi * 100:.1f}]"
     return text
 
 
@@ -141,6 +141,14 @@ def overview(rep):
     return out
 
 
+def column_title(m):
+    """'path length (cells)'; a ratio or a count named by its title alone."""
+    unit, title = metric_unit(m), metric_title(m)
+    if not unit or "/" in unit or unit in ("ratio", title) or title.endswith(")"):
+        return title
+    return f"{title} ({unit})"
+
+
 def world_tables(rep, key):
     cells = rep.worlds[key]
     out = [f"## {rep.world_title(key)}\n"]
@@ -148,8 +156,7 @@ def world_tables(rep, key):
     metrics = avail if rep.metric_filter else [m for m in RESULT_METRICS if m in avail]
     show_time = rep.has_time() and rep.wanted(TIME)
     cols = ["density", "planner", "success % [95%]"]
-    cols += [f"{metric_title(m)} ({metric_unit(m)})" if metric_unit(m) and metric_unit(m) != metric_title(m)
-             else metric_title(m) for m in metrics]
+    cols += [column_title(m) for m in metrics]
     if show_time:
         cols.append("plan time \u00b5s median (p5\u2013p95)")
     out.append("Means over successful runs (95% intervals: report.json and the pictures).\n")

@@ -206,9 +206,9 @@ def ratio_ticks(ax, values):
         b = min([t for t in RATIO_LADDER if t >= hi] or [hi])
         # An end close to 1 would print its label over 1's: move it a ladder step outward.
         gap = math.log(b / a) / 7
-        while a < 1.0 and math.log(1.0 / a) < 0.6 * gap and a > RATIO_LADDER[0]:
+        while a < 1.0 and math.log(1.0 / a) < 0.8 * gap and a > RATIO_LADDER[0]:
             a = max(t for t in RATIO_LADDER if t < a)
-        while b > 1.0 and math.log(b) < 0.6 * gap and b < RATIO_LADDER[-1]:
+        while b > 1.0 and math.log(b) < 0.8 * gap and b < RATIO_LADDER[-1]:
             b = min(t for t in RATIO_LADDER if t > b)
         ticks = spaced_ticks([t for t in RATIO_LADDER if a <= t <= b], a, b, keep=1.0)
         ax.set_ylim(a / 1.06, b * 1.06)

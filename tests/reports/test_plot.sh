@@ -169,6 +169,11 @@ npdf=$(ls "$fo"/*.pdf 2>/dev/null | wc -l)
 nother=$(ls "$fo" | grep -vc '\.pdf$\|^summary.md$')
 [ "$npdf" -eq 14 ] && [ "$nother" -eq 0 ] && ok "14 PDFs, nothing else" || bad "filtered: $npdf PDFs, $nother other files"
 [ "$(head -c 5 "$fo/success.pdf")" = "%PDF-" ] && ok "success.pdf is a PDF" || bad "success.pdf is not a PDF"
+# Reproducible files: the same command writes the same bytes (no date in the PDF).
+"$py" "$plot" "$tiny" "$work/filtered2" --format pdf --planners astar,rrt --metrics path_length,plan_time_ns >/dev/null 2>&1
+same=1
+for f in "$fo"/*.pdf; do cmp -s "$f" "$work/filtered2/$(basename "$f")" || same=0; done
+[ $same -eq 1 ] && ok "PDFs byte-identical when drawn again" || bad "PDFs differ when drawn again"
 if grep -q 'dijkstra' "$fo/summary.md" || ! grep -q 'path length' "$fo/summary.md" || grep -q 'turns' "$fo/summary.md"; then
   bad "--planners/--metrics not applied to summary.md"
 else

@@ -186,7 +186,7 @@
       }
     });
     const lay = layout(title, {boxmode: "group"});
-    if (logAxis(all)) lay.yaxis.type = "log";
+    if (logAxis(all)) { lay.yaxis.type = "log"; lay.yaxis.dtick = "D2"; }
     document.getElementById("box-title").textContent = "Distribution: " + title + " \u2014 " + world().title;
     document.getElementById("box-note").textContent = runs
       ? "Every run (metrics: successful runs; planning time: every run). Box: quartiles; whiskers: 1.5 IQR; points beyond; dashed: mean."
@@ -245,7 +245,7 @@
       xaxis: {title: {text: "obstacle density"}, tickvals: ds.map(function (_, i) { return i; }),
               ticktext: ds.map(dtext), range: [-0.6, ds.length - 0.4], zeroline: false},
       shapes: [{type: "line", xref: "paper", x0: 0, x1: 1, y0: 1, y1: 1, line: {dash: "dash", color: "#333"}}]});
-    if (logAxis(all.concat([1]), 2.5)) lay.yaxis.type = "log";
+    if (logAxis(all.concat([1]), 2.5)) { lay.yaxis.type = "log"; lay.yaxis.dtick = "D2"; }
     const title = metricTitle(state.metric);
     document.getElementById("paired-title").textContent = "Paired ratio to " + D.baseline + ": " + title;
     document.getElementById("paired-note").textContent = traces.length

@@ -94,7 +94,10 @@ def plot_distributions(plt, saver, rep, key, runs, kind="box"):
             elif st:
                 allv += [st["whislo"], st["whishi"]]
         pos_vals = [v for v in allv if finite(v)]
-        logged = bool(pos_vals) and min(pos_vals) > 0 and max(pos_vals) / min(pos_vals) > 30
+        # Log scale when the boxes' whiskers (not a few outliers) span more than 30x.
+        spans = [v for (_, _, _, st, _) in data if st for v in (st["whislo"], st["whishi"]) if finite(v)]
+        logged = bool(pos_vals) and min(pos_vals) > 0 and bool(spans) and min(spans) > 0 \
+            and max(spans) / min(spans) > 30
         for (i, k, label, st, vals) in data:
             if st is None:
                 continue

@@ -39,7 +39,9 @@ class Runs:
 def load_runs(path, doc):
     """Read RUNS.jsonl; every record must be an agvbench journal record of this version whose
     cell and planner are in the report `doc` (a journal of another sweep is refused)."""
-    cells = {c.get("cell") for c in doc["cells"]}
+    cells = {c["cell"] if isinstance(c.get("cell"), str) else
+             f"{c['generator']}/{int(c['width'])}x{int(c['height'])}/{float(c['density']):g}"
+             for c in doc["cells"]}  # as plot_report.Report.cell_key
     planners = {p["planner"] for c in doc["cells"] for p in c["planners"]}
     runs = Runs(path)
     try:

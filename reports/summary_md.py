@@ -175,8 +175,9 @@ def world_tables(rep, key):
             if show_time:
                 t = rep.summary_of(p, TIME)
                 if t and finite(t.get("median")):
-                    r.append(f"{fmt(t['median'] / 1e3)} ({fmt(t.get('p5', 0) / 1e3)}\u2013"
-                             f"{fmt(t.get('p95', 0) / 1e3)})")
+                    lo, hi = t.get("p5"), t.get("p95")
+                    r.append(f"{fmt(t['median'] / 1e3)} ({fmt(lo / 1e3 if finite(lo) else None)}\u2013"
+                             f"{fmt(hi / 1e3 if finite(hi) else None)})")
                 else:
                     r.append(DASH)
             out.append(row(r))

@@ -40,7 +40,10 @@ import os
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+# reports/ holds html.py, which would hide the standard library's `html` package (matplotlib
+# imports html.entities): the folder goes last on the path, after the standard library.
+_here = os.path.dirname(os.path.abspath(__file__))
+sys.path[:] = [p for p in sys.path if os.path.abspath(p or ".") != _here] + [_here]
 import agvreport  # noqa: E402
 from agvreport import Moments, ReportError, moments_from_summary  # noqa: E402
 

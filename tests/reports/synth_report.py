@@ -19,7 +19,7 @@ import random
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "reports"))
+sys.path.append(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "reports"))  # after the standard library: reports/html.py
 import agvreport  # noqa: E402
 
 METRICS = ["path_length", "path_length_m", "waypoints", "turns", "turn_angle_rad",

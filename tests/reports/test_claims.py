@@ -17,7 +17,7 @@ import tempfile
 ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(ROOT, "tests", "reports"))
-sys.path.insert(0, os.path.join(ROOT, "reports"))
+sys.path.append(os.path.join(ROOT, "reports"))  # after the standard library: reports/html.py
 import synth_report  # noqa: E402
 import agvreport  # noqa: E402
 

@@ -4,7 +4,11 @@
 #     it needs no matplotlib;
 #  2. plot.py on tests/reports/tiny_report.json and plot_paths.py on tests/reports/tiny_plan.json:
 #     every picture and summary.md written and non-empty; bad and old-schema input exits 2 with
-#     a message. Skipped (exit 77, ctest SKIP_RETURN_CODE) only when Debian's /usr/bin/python3
+#     a message; --planners / --metrics filters (an unknown name exits 2 naming it), --format
+#     pdf and svg, --runs (ECDF, box and violin plots from every run) on a synthetic 24-planner
+#     sweep (tests/reports/synth_many.py): every planner in every legend, no legend or note over
+#     a panel or another note (plot_style.layout_problems, itself checked on a figure made to
+#     overlap), distinct colour and marker per planner, log axes labelled at both ends. Skipped (exit 77, ctest SKIP_RETURN_CODE) only when Debian's /usr/bin/python3
 #     cannot import matplotlib (CI installs python3-matplotlib, so it never skips there).
 # Usage: test_plot.sh REPO_ROOT
 set -u
@@ -64,6 +68,16 @@ expect2 "plot.py cell without planners" "cells\[0\]: missing key 'planners'" "$p
 expect2 "plot.py no cells" "no cells" "$py" "$plot" "$work/empty.json" "$work/o1"
 expect2 "plot.py missing file" "no such file" "$py" "$plot" "$work/nothere.json" "$work/o1"
 expect2 "plot.py plan document" "plot_paths.py" "$py" "$plot" "$root/tests/reports/tiny_plan.json" "$work/o1"
+tiny="$root/tests/reports/tiny_report.json"
+expect2 "plot.py unknown planner" "--planners: no planner 'nope'" "$py" "$plot" "$tiny" "$work/o1" --planners astar,nope
+expect2 "plot.py unknown metric" "--metrics: no metric 'path_lenght'" "$py" "$plot" "$tiny" "$work/o1" --metrics path_lenght
+expect2 "plot.py unknown format" "invalid choice: 'gif'" "$py" "$plot" "$tiny" "$work/o1" --format gif
+expect2 "plot.py violin without runs" "--dist violin needs --runs" "$py" "$plot" "$tiny" "$work/o1" --dist violin
+expect2 "plot.py missing journal" "nothere.jsonl: no such file" "$py" "$plot" "$tiny" "$work/o1" --runs "$work/nothere.jsonl"
+printf '{"tool": "agvbench", "journal_version": 1, "planner": "astar", "cell": "uniform/99x99/0.5", "map_index": 0, "outcome": "success", "metrics": {}}\n' >"$work/other.jsonl"
+expect2 "plot.py journal of another sweep" "line 1: cell 'uniform/99x99/0.5' is not in the report" "$py" "$plot" "$tiny" "$work/o1" --runs "$work/other.jsonl"
+printf '{"tool": "agvbench", "journal_version": 9}\n' >"$work/v9.jsonl"
+expect2 "plot.py journal of another version" "journal_version 9" "$py" "$plot" "$tiny" "$work/o1" --runs "$work/v9.jsonl"
 [ -e "$work/o1" ] && bad "plot.py created OUTDIR for a bad report" || ok "no OUTDIR for bad reports"
 
 paths="$root/reports/plot_paths.py"
@@ -109,18 +123,94 @@ for f in success.png plan_time.png metrics_uniform_16x16.png metrics_blocks_32x3
          paired_uniform_16x16.png paired_blocks_32x32.png; do
   if is_png "$out/$f"; then ok "$f written"; else bad "$f missing, empty or not a PNG"; fi
 done
+for f in dist_uniform_16x16.png dist_blocks_32x32.png; do
+  if is_png "$out/$f"; then ok "$f written"; else bad "$f missing, empty or not a PNG"; fi
+done
 n=$(ls "$out"/*.png 2>/dev/null | wc -l)
-[ "$n" -eq 10 ] && ok "10 pictures for 2 generators x 2 sizes" || bad "expected 10 PNGs, got $n"
-if [ -s "$out/summary.md" ] && grep -q '^| density | planner | success' "$out/summary.md" \
-   && grep -q 'Paired against `astar`' "$out/summary.md"; then
+[ "$n" -eq 14 ] && ok "14 pictures for 2 generators x 2 sizes" || bad "expected 14 PNGs, got $n"
+[ -e "$out/ecdf_plan_time.png" ] && bad "an ECDF without --runs" || ok "no ECDF without --runs"
+grep -q "layout:" "$work/plot.err" && bad "layout problems: $(grep layout: "$work/plot.err")" || ok "no layout problem reported"
+sum="$out/summary.md"
+if [ -s "$sum" ] && grep -q '^| density | planner | success' "$sum" \
+   && grep -q 'Paired against `astar`' "$sum"; then
   ok "summary.md has the per-cell and paired tables"
 else
   bad "summary.md missing or without its tables"
 fi
-if [ -s "$out/summary.md" ] && [ "$(grep -c '^## ' "$out/summary.md")" -eq 4 ]; then
-  ok "summary.md has one section per generator and size"
+# Overview first: the first section, planners x success, length and time, then one section per world.
+if [ "$(grep '^## ' "$sum" | head -1)" = "## Overview" ] \
+   && grep -q '^| planner | runs | success % \[95%\] | path length / astar \[95%\] | p<0.05 | plan time median µs' "$sum" \
+   && [ "$(grep -c '^| `\(astar\|dijkstra\|rrt\)`' "$sum")" -ge 3 ]; then
+  ok "summary.md opens with the overview table"
 else
-  bad "summary.md sections"
+  bad "summary.md overview: $(grep -A3 '^## Overview' "$sum" | head -5)"
+fi
+[ "$(grep -c '^## ' "$sum")" -eq 6 ] && ok "summary.md: overview, the sweep, one section per generator and size" \
+  || bad "summary.md sections: $(grep '^## ' "$sum" | tr '\n' ';')"
+# p-values of the paired tables, and every time header in µs (none in ns).
+grep -qE '\((p=|p<)[0-9.]+\)' "$sum" && ok "summary.md gives Wilcoxon p-values" || bad "summary.md has no p-value"
+if grep -E '^\| (density|planner) ' "$sum" | grep -E 'plan time' | grep -vq 'µs'; then
+  bad "a plan time header without µs"
+else
+  ok "every plan time header names µs"
+fi
+# The widest table row stays readable (the old summary's rows ran past 400 characters).
+wide=$(awk '/^\|/ { if (length($0) > m) m = length($0) } END { print m + 0 }' "$sum")
+[ "$wide" -le 260 ] && ok "summary.md rows at most 260 characters (widest $wide)" || bad "summary.md row of $wide characters"
+
+# Filters and formats: PDF of two planners and two metrics.
+fo="$work/filtered"
+if "$py" "$plot" "$tiny" "$fo" --format pdf --planners astar,rrt --metrics path_length,plan_time_ns >/dev/null 2>"$work/f.err"; then
+  ok "plot.py --format pdf --planners --metrics"
+else
+  bad "plot.py filtered: $(cat "$work/f.err")"
+fi
+npdf=$(ls "$fo"/*.pdf 2>/dev/null | wc -l)
+nother=$(ls "$fo" | grep -vc '\.pdf$\|^summary.md$')
+[ "$npdf" -eq 14 ] && [ "$nother" -eq 0 ] && ok "14 PDFs, nothing else" || bad "filtered: $npdf PDFs, $nother other files"
+[ "$(head -c 5 "$fo/success.pdf")" = "%PDF-" ] && ok "success.pdf is a PDF" || bad "success.pdf is not a PDF"
+# Reproducible files: the same command writes the same bytes (no date in the PDF).
+"$py" "$plot" "$tiny" "$work/filtered2" --format pdf --planners astar,rrt --metrics path_length,plan_time_ns >/dev/null 2>&1
+same=1
+for f in "$fo"/*.pdf; do cmp -s "$f" "$work/filtered2/$(basename "$f")" || same=0; done
+[ $same -eq 1 ] && ok "PDFs byte-identical when drawn again" || bad "PDFs differ when drawn again"
+if grep -q 'dijkstra' "$fo/summary.md" || ! grep -q 'path length' "$fo/summary.md" || grep -q 'turns' "$fo/summary.md"; then
+  bad "--planners/--metrics not applied to summary.md"
+else
+  ok "summary.md holds only the chosen planners and metrics"
+fi
+
+# 24 planners with their journal: SVG, violins, the ECDF; the layout, legends and palette.
+"$py" "$root/tests/reports/synth_many.py" "$work/many.json" "$work/many.jsonl" 24
+mo="$work/many"
+if "$py" "$plot" "$work/many.json" "$mo" --runs "$work/many.jsonl" --format svg --dist violin \
+     --metrics path_length,turns,plan_time_ns >"$work/m.out" 2>"$work/m.err"; then
+  ok "plot.py --runs --format svg --dist violin on 24 planners"
+else
+  bad "plot.py on 24 planners: $(cat "$work/m.err")"
+fi
+grep -q "layout:" "$work/m.err" && bad "24 planners: $(grep layout: "$work/m.err")" || ok "24 planners: no legend or note over a panel or a note"
+for f in ecdf_plan_time.svg dist_uniform_24x24.svg plan_time.svg success.svg paired_uniform_32x32.svg metrics_uniform_16x16.svg; do
+  if [ -s "$mo/$f" ] && head -c 300 "$mo/$f" | grep -q '<svg\|<?xml'; then ok "$f written (SVG)"; else bad "$f missing or not SVG"; fi
+done
+# Every planner named in each legend (the SVG keeps text as text).
+for f in ecdf_plan_time.svg dist_uniform_24x24.svg plan_time.svg success.svg metrics_uniform_16x16.svg; do
+  miss=$("$py" - "$work/many.json" "$mo/$f" <<'PY'
+import json, sys
+labels = [p["label"] for p in json.load(open(sys.argv[1]))["config"]["planners"]]
+svg = open(sys.argv[2], encoding="utf-8").read()
+print(" ".join(l for l in labels if l not in svg))
+PY
+)
+  [ -z "$miss" ] && ok "$f names all 24 planners" || bad "$f misses planners: $miss"
+done
+# Every size of the sweep on the time axis.
+grep -q '16²' "$mo/plan_time.svg" && grep -q '24²' "$mo/plan_time.svg" && grep -q '32²' "$mo/plan_time.svg" \
+  && ok "plan_time.svg: every size (16², 24², 32²)" || bad "plan_time.svg lacks a size"
+if "$py" "$root/tests/reports/test_plot_style.py" "$root" "$work/many.json"; then
+  ok "palette, log ticks and the layout check (test_plot_style.py)"
+else
+  bad "test_plot_style.py"
 fi
 
 if "$py" "$paths" "$root/tests/reports/tiny_plan.json" "$work/plan.png" >/dev/null 2>"$work/paths.err" && is_png "$work/plan.png"; then

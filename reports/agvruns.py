@@ -1,0 +1,88 @@
+"""The per-run journal of a sweep (`agvbench run --runs-out RUNS.jsonl`, reports/SCHEMA.md
+"Per-run records") for the pictures and the HTML report: read, checked against its report, and
+grouped by cell and planner. Standard library only.
+"""
+
+import json
+import math
+
+from agvreport import ReportError
+
+JOURNAL_VERSION = 1  # engine/run_record.h kJournalVersion
+
+
+def _number(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+
+
+class Runs:
+    """Values per (cell, planner): `values(cell, planner, metric)` is the list over successful
+    runs (metrics) or over every run (`plan_time_ns`, failures included, as the report's
+    timing), in map-index order."""
+
+    def __init__(self, path):
+        self.path = path
+        self.by = {}  # cell -> planner -> [(map_index, outcome, metrics, plan_time_ns)]
+        self.count = 0
+
+    def values(self, cell, planner, metric):
+        rows = sorted(self.by.get(cell, {}).get(planner, []), key=lambda r: r[0])
+        if metric == "plan_time_ns":
+            return [float(r[3]) for r in rows if _number(r[3])]
+        return [float(r[2][metric]) for r in rows
+                if r[1] == "success" and _number(r[2].get(metric))]
+
+    def outcomes(self, cell, planner):
+        return [r[1] for r in self.by.get(cell, {}).get(planner, [])]
+
+
+def load_runs(path, doc):
+    """Read RUNS.jsonl; every record must be an agvbench journal record of this version whose
+    cell and planner are in the report `doc` (a journal of another sweep is refused)."""
+    cells = {c["cell"] if isinstance(c.get("cell"), str) else
+             f"{c['generator']}/{int(c['width'])}x{int(c['height'])}/{float(c['density']):g}"
+             for c in doc["cells"]}  # as plot_report.Report.cell_key
+    planners = {p["planner"] for c in doc["cells"] for p in c["planners"]}
+    runs = Runs(path)
+    try:
+        with open(path, "r", encoding="utf-8") as f:
+            for n, line in enumerate(f, 1):
+                line = line.strip()
+                if not line:
+                    continue
+                try:
+                    r = json.loads(line)
+                except json.JSONDecodeError as e:
+                    raise ReportError(f"line {n}: not valid JSON: {e.msg}") from None
+                if not isinstance(r, dict):
+                    raise ReportError(f"line {n}: expected a JSON object (an agvbench --runs-out record)")
+                tool, version = r.get("tool"), r.get("journal_version")
+                if tool != "agvbench" or version != JOURNAL_VERSION:
+                    raise ReportError(f"line {n}: a record of tool {tool!r}, journal_version {version!r}; "
+                                      f"these scripts read tool 'agvbench', journal_version {JOURNAL_VERSION}")
+                for key in ("planner", "cell", "map_index", "outcome", "metrics"):
+                    if key not in r:
+                        raise ReportError(f"line {n}: missing key '{key}'")
+                if not isinstance(r["metrics"], dict):
+                    raise ReportError(f"line {n}.metrics: expected an object")
+                if r["cell"] not in cells:
+                    raise ReportError(f"line {n}: cell {r['cell']!r} is not in the report "
+                                      "(the journal of another sweep?)")
+                if r["planner"] not in planners:
+                    raise ReportError(f"line {n}: planner {r['planner']!r} is not in the report "
+                                      "(the journal of another sweep?)")
+                t = (r.get("timing") or {}).get("plan_time_ns") if isinstance(r.get("timing"), dict) else None
+                runs.by.setdefault(r["cell"], {}).setdefault(r["planner"], []).append(
+                    (r["map_index"], r["outcome"], r["metrics"], t))
+                runs.count += 1
+    except FileNotFoundError:
+        raise ReportError("no such file") from None
+    except IsADirectoryError:
+        raise ReportError("is a directory, expected a JSON Lines file") from None
+    except UnicodeDecodeError as e:
+        raise ReportError(f"not UTF-8 text ({e.reason})") from None
+    except OSError as e:
+        raise ReportError(f"cannot read: {e.strerror}") from None
+    if runs.count == 0:
+        raise ReportError("no records (an empty journal)")
+    return runs

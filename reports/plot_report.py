@@ -1,0 +1,233 @@
+"""An `agvbench run` report regrouped for the pictures and the summary (plot.py, plot_dist.py,
+summary_md.py): worlds (generator, size) -> density -> cell, the planners and metrics chosen
+with --planners / --metrics, and every planner's style. Standard library only (the style's
+colours are plain strings; matplotlib is imported where a picture is drawn).
+"""
+
+import math
+import re
+
+import agvreport
+from agvreport import ReportError
+from plot_style import Style
+
+# Metric names -> (unit, short title). Order = panel order. Times are shown in microseconds
+# (the JSON keeps nanoseconds in the fields named *_ns).
+METRIC_LABELS = {
+    "path_length": ("cells", "path length"),
+    "path_length_m": ("m", "path length (m)"),
+    "optimality_ratio": ("length / optimum", "optimality ratio"),
+    "waypoints": ("waypoints", "waypoints"),
+    "max_turn_rad": ("rad", "largest turn"),
+    "any_angle_ratio": ("ratio", "length / any-angle optimum"),
+    "turns": ("turns", "turns"),
+    "turn_angle_rad": ("rad", "turn angle sum"),
+    "smoothness_mean": ("rad / cell", "mean curvature proxy"),
+    "smoothness_max": ("rad / cell", "max curvature proxy"),
+    "min_clearance": ("cells", "min clearance"),
+    "min_clearance_m": ("m", "min clearance (m)"),
+    "motion_time_s": ("s", "motion time (eq. 5.2e)"),
+    "search_expansions": ("nodes", "search expansions"),
+    "collision_checks": ("checks", "collision checks"),
+}
+TIME = "plan_time_ns"
+TIME_LABEL = ("\u00b5s", "planning time")
+PAIRED_ORDER = ["path_length", "motion_time_s", "waypoints", "turns", "turn_angle_rad",
+                "collision_checks"]
+
+
+def safe_name(text):
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", text).strip("_") or "x"
+
+
+def finite(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+
+
+def nan_or(v):
+    return float(v) if finite(v) else float("nan")
+
+
+def metric_title(name):
+    if name == TIME:
+        return TIME_LABEL[1]
+    return METRIC_LABELS.get(name, ("", name.replace("_", " ")))[1]
+
+
+def metric_unit(name):
+    if name == TIME:
+        return TIME_LABEL[0]
+    return METRIC_LABELS.get(name, ("", ""))[0]
+
+
+def split_list(values):
+    """--planners a,b --planners c -> [a, b, c] (order kept, duplicates dropped)."""
+    out = []
+    for v in values or []:
+        for part in v.split(","):
+            part = part.strip()
+            if part and part not in out:
+                out.append(part)
+    return out
+
+
+class Report:
+    """The report regrouped for plotting: worlds (gen, w, h) -> {density: cell}."""
+
+    def __init__(self, doc, planners=None, metrics=None):
+        self.doc = doc
+        self.config = doc.get("config", {})
+        self.all_labels = agvreport.planner_order(doc)
+        self.baseline = agvreport.baseline_label(doc)
+        # Colours follow the config's order, so a planner keeps its look under --planners.
+        self.style = Style(self.all_labels, self.baseline)
+        present = {p["planner"] for c in doc["cells"] for p in c["planners"]}
+        if planners:
+            for p in planners:
+                if p not in present:
+                    raise ReportError(f"--planners: no planner '{p}' in the report (it has: "
+                                      f"{', '.join(l for l in self.all_labels if l in present)})")
+            self.labels = [l for l in self.all_labels if l in planners]
+        else:
+            self.labels = [l for l in self.all_labels if l in present]
+        self.worlds = {}  # (gen, w, h) -> {density: cell}
+        for cell in doc["cells"]:
+            key = (cell["generator"], int(cell["width"]), int(cell["height"]))
+            self.worlds.setdefault(key, {})[float(cell["density"])] = cell
+        self.generators = []
+        self.sizes = []
+        self.densities = sorted({d for cells in self.worlds.values() for d in cells})
+        for (g, w, h) in self.worlds:
+            if g not in self.generators:
+                self.generators.append(g)
+            if (w, h) not in self.sizes:
+                self.sizes.append((w, h))
+        self.sizes.sort(key=lambda s: (s[0] * s[1], s))
+        m = self.config.get("map") if isinstance(self.config.get("map"), dict) else {}
+        edge = m.get("cell_edge", 1.0)
+        self.cell_edge = edge if finite(edge) else 1.0
+        known = self._all_metric_names()
+        if metrics:
+            for name in metrics:
+                if name not in known:
+                    raise ReportError(f"--metrics: no metric '{name}' in the report (it has: "
+                                      f"{', '.join(known)})")
+        self.metric_filter = list(metrics) if metrics else None
+
+    def ordered_worlds(self):
+        return sorted(self.worlds, key=lambda k: (self.generators.index(k[0]), k[1] * k[2]))
+
+    @staticmethod
+    def world_title(key):
+        g, w, h = key
+        return f"{g} {w}\u00d7{h}"
+
+    @staticmethod
+    def world_file(key):
+        g, w, h = key
+        return f"{safe_name(g)}_{w}x{h}"
+
+    @staticmethod
+    def cell_key(cell):
+        if isinstance(cell.get("cell"), str):
+            return cell["cell"]
+        return f"{cell['generator']}/{int(cell['width'])}x{int(cell['height'])}/{float(cell['density']):g}"
+
+    @staticmethod
+    def planner(cell, label):
+        for p in cell["planners"]:
+            if p["planner"] == label:
+                return p
+        return None
+
+    @staticmethod
+    def paired(cell, label):
+        for c in cell["paired"]:
+            if c["planner"] == label:
+                return c
+        return None
+
+    def present(self, cells):
+        """The chosen planners that ran in any of these cells."""
+        return [l for l in self.labels if any(self.planner(c, l) for c in cells)]
+
+    def wanted(self, name):
+        return self.metric_filter is None or name in self.metric_filter
+
+    def _all_metric_names(self):
+        seen = []
+        for cell in self.doc["cells"]:
+            for p in cell["planners"]:
+                for name in p["metrics"]:
+                    if name not in seen:
+                        seen.append(name)
+            for c in cell["paired"]:
+                for name in c["metrics"]:
+                    if name not in seen:
+                        seen.append(name)
+        known = [m for m in METRIC_LABELS if m in seen]
+        return known + sorted(m for m in seen if m not in METRIC_LABELS) + [TIME]
+
+    def metric_names(self):
+        """Metrics with a finite mean somewhere, in panel order (metres dropped when they equal
+        cells), filtered by --metrics. Planning time is not among them (it is timing)."""
+        seen = []
+        for cells in self.worlds.values():
+            for cell in cells.values():
+                for p in cell["planners"]:
+                    for name, s in p["metrics"].items():
+                        if name not in seen and finite(s.get("mean")):
+                            seen.append(name)
+        known = [m for m in METRIC_LABELS if m in seen]
+        if abs(self.cell_edge - 1.0) < 1e-12 and self.metric_filter is None:
+            known = [m for m in known if m not in ("path_length_m", "min_clearance_m")]
+        extras = sorted(m for m in seen if m not in METRIC_LABELS)
+        return [m for m in known + extras if self.wanted(m)]
+
+    def paired_names(self):
+        seen = []
+        for cells in self.worlds.values():
+            for cell in cells.values():
+                for c in cell["paired"]:
+                    for name, comp in c["metrics"].items():
+                        if name not in seen and finite(comp.get("geo_mean_ratio")):
+                            seen.append(name)
+        names = [m for m in PAIRED_ORDER if m in seen] + sorted(m for m in seen if m not in PAIRED_ORDER)
+        if self.has_paired_time():
+            names.append(TIME)
+        return [m for m in names if self.wanted(m)]
+
+    def has_paired_time(self):
+        for cells in self.worlds.values():
+            for cell in cells.values():
+                for c in cell["paired"]:
+                    t = (c.get("timing") or {}).get(TIME)
+                    if isinstance(t, dict) and finite(t.get("geo_mean_ratio")):
+                        return True
+        return False
+
+    def has_time(self):
+        return any(isinstance((p.get("timing") or {}).get(TIME), dict)
+                   for cells in self.worlds.values() for c in cells.values() for p in c["planners"])
+
+    @staticmethod
+    def summary_of(p, name):
+        """A planner cell's SUMMARY of a metric, or of planning time."""
+        if name == TIME:
+            t = (p.get("timing") or {}).get(TIME)
+            return t if isinstance(t, dict) else None
+        s = p["metrics"].get(name)
+        return s if isinstance(s, dict) else None
+
+    @staticmethod
+    def comparison_of(c, name):
+        if name == TIME:
+            comp = (c.get("timing") or {}).get(TIME)
+        else:
+            comp = c["metrics"].get(name)
+        return comp if isinstance(comp, dict) else None
+
+
+def scale_of(name):
+    """Factor from the JSON's unit to the shown one: ns -> µs for planning time."""
+    return 1e-3 if name == TIME else 1.0

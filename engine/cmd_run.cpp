@@ -200,6 +200,11 @@ int command_run(const RunCommand& cmd) {
                  !options.resume_path.empty() ? options.resume_path.c_str()
                  : options.runs_path.empty()  ? "JOURNAL (none was written: use --runs-out)"
                                               : options.runs_path.c_str());
+    if (!cmd.db.empty())
+      std::fprintf(stderr,
+                   "agvbench: nothing appended to %s (an interrupted sweep is appended when its "
+                   "--resume completes it)\n",
+                   cmd.db.c_str());
     return 130;
   }
   if (!cmd.quiet) {

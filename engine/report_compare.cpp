@@ -119,9 +119,10 @@ void diff_leaves(const json& a, const json& b, std::vector<std::string>& path,
   }
   if (a.is_array() && b.is_array() && a.size() == b.size()) {
     for (std::size_t i = 0; i < a.size(); ++i) {
-      path.back() += "[" + std::to_string(i) + "]";
+      const std::size_t length = path.back().size();
+      path.back().append(1, '[').append(std::to_string(i)).append(1, ']');
       diff_leaves(a[i], b[i], path, out);
-      path.back().erase(path.back().rfind('['));
+      path.back().resize(length);
     }
     return;
   }
@@ -450,8 +451,13 @@ std::string comparison_text(const ReportComparison& c) {
   std::snprintf(line, sizeof line, "  %-24s %-22s %7s %7s\n", "", "", "before", "after");
   out << line;
   for (const TimingComparison& t : c.timing) {
-    const std::string ci =
-        t.ci95.defined() ? "[" + fixed(t.ci95.lo, 3) + ", " + fixed(t.ci95.hi, 3) + "]" : "";
+    std::string ci;
+    if (t.ci95.defined())
+      ci.append(1, '[')
+          .append(fixed(t.ci95.lo, 3))
+          .append(", ")
+          .append(fixed(t.ci95.hi, 3))
+          .append(1, ']');
     std::snprintf(line, sizeof line, "  %-24s %-22s %7zu %7zu %8s %19s %-12s %8s%s\n",
                   t.planner.c_str(), t.cell.c_str(), t.runs_before, t.runs_after,
                   fixed(t.ratio, 3).c_str(), ci.c_str(), test_name(t.test), p_text(t.p).c_str(),

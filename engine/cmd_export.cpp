@@ -26,6 +26,8 @@ int command_export(const ExportCommand& cmd) {
     read_run_messages(j, results, messages);
   }
   update_completeness(results);
+  if (coverage_of(results).runs_present == 0)
+    throw InputError("the journals hold no run of this config; nothing exported");
   const nlohmann::json report = build_report(config, results);
   // Journals record no machine: the environment is the exporting one's (source "export").
   const std::int64_t id = append_experiment(

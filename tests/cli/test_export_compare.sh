@@ -71,6 +71,8 @@ expect_exit "export into a file that is not a database: exit 2" 2 "$bin" export 
 check "... the file left as it was" test "$(cat notes.txt)" = "not a database, a user file"
 expect_exit "export over its own journal: exit 2" 2 "$bin" export tiny1.jsonl --config tiny.json --sqlite tiny1.jsonl
 expect_exit "export into a missing folder: exit 2" 2 "$bin" export tiny1.jsonl --config tiny.json --sqlite nowhere/r.db
+: >empty.jsonl
+expect_exit "export of an empty journal: exit 2" 2 "$bin" export empty.jsonl --config tiny.json --sqlite new.db
 expect_exit "export of a journal of another config: exit 2" 2 "$bin" export quick.jsonl --config tiny.json --sqlite new.db
 
 # compare

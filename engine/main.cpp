@@ -80,11 +80,12 @@ int main(int argc, char** argv) {
   auto* validate_cmd = app.add_subcommand("validate", "check a sweep config without running it");
   validate_cmd->add_option("config", validate_path, "sweep config")->required();
 
-  agv::ListOptions list;
+  bool list_json = false;
   auto* list_cmd =
       app.add_subcommand("list", "list planners and map generators, their parameters and defaults");
-  list_cmd->add_flag("--json", list.json,
+  list_cmd->add_flag("--json", list_json,
                      "print the registries as one JSON object {planners, generators}");
+  agv::ListOptions list;
   list_cmd->add_option("names", list.names, "only these planners or generators");
   list_cmd->add_flag("--brief", list.brief, "one line per planner and generator");
 
@@ -164,7 +165,10 @@ int main(int argc, char** argv) {
     if (*merge_cmd) return agv::command_merge(merge_config, merge_journals, merge_out);
     if (*worker_cmd) return agv::worker_main(worker_memory);
     if (*validate_cmd) return agv::command_validate(validate_path);
-    if (*list_cmd) return agv::command_list(list);
+    if (*list_cmd) {
+      list.json = list_json;
+      return agv::command_list(list);
+    }
     if (*export_cmd) return agv::command_export(export_args);
     if (*compare_cmd) {
       if (*regression_opt) compare.fail_on_regression_pct = regression_pct;

@@ -17,6 +17,7 @@ int command_export(const ExportCommand& cmd) {
   std::vector<InputPath> inputs = {{"config file", located}};
   for (const auto& j : cmd.journals) inputs.push_back({"journal", j});
   check_paths(inputs, {{"--sqlite", cmd.sqlite, OutputKind::database}});
+  check_results_db(cmd.sqlite, "--sqlite");
   ignore_file_size_signal();
   SweepResults results = empty_results(config);
   const std::string hash = config_hash(config);

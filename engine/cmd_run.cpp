@@ -89,6 +89,7 @@ void check_run_paths(const RunCommand& cmd, const std::string& config_path,
               {{cmd.out.empty() ? "report" : "--out", config.report_path},
                journal,
                {"--db", cmd.db, OutputKind::database}});
+  if (!cmd.db.empty()) check_results_db(cmd.db, "--db");
   ignore_file_size_signal();
 }
 
@@ -109,8 +110,8 @@ void write_database(const RunCommand& cmd, const SweepConfig& config, const Swee
   RunMessages messages;
   if (!journal.empty()) read_run_messages(journal, results, messages);
   const nlohmann::json report = build_report(config, results);
-  const std::int64_t id = append_experiment(
-      cmd.db, {&config, &results, &report, &messages, "run", environment_json(results.threads)});
+  const std::int64_t id = append_experiment(cmd.db, {&config, &results, &report, &messages, "run",
+                                                     environment_json(results.threads), "--db"});
   if (!cmd.quiet)
     std::fprintf(stderr, "agvbench: experiment %lld of %s\n", static_cast<long long>(id),
                  cmd.db.c_str());

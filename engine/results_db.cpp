@@ -137,13 +137,15 @@ class Statement;
 // One open database; every failure names the file and SQLite's message.
 class Database {
  public:
-  explicit Database(const std::string& path) : path_(path) {
-    if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) !=
-        SQLITE_OK) {
+  // read_only: for the check before a sweep, which must not create the file.
+  Database(const std::string& path, const std::string& option, bool read_only = false)
+      : path_(path), option_(option) {
+    const int flags = read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+    if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
       const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
       sqlite3_close(db_);
       db_ = nullptr;
-      throw InputError("--sqlite \"" + path + "\": cannot be opened: " + message);
+      throw InputError(option + " \"" + path + "\": cannot be opened: " + message);
     }
     sqlite3_busy_timeout(db_, 10000);  // another writer's transaction: wait, then fail
   }
@@ -153,9 +155,11 @@ class Database {
 
   sqlite3* handle() const { return db_; }
   const std::string& path() const { return path_; }
+  // "--sqlite \"PATH\"": how messages name the database.
+  std::string named() const { return option_ + " \"" + path_ + "\""; }
 
   [[noreturn]] void fail(const std::string& doing) const {
-    throw std::runtime_error("database \"" + path_ + "\": " + doing + ": " + sqlite3_errmsg(db_));
+    throw std::runtime_error(named() + ": " + doing + ": " + sqlite3_errmsg(db_));
   }
   void exec(const char* sql, const char* doing) {
     if (sqlite3_exec(db_, sql, nullptr, nullptr, nullptr) != SQLITE_OK) fail(doing);
@@ -165,6 +169,7 @@ class Database {
 
  private:
   std::string path_;
+  std::string option_;
   sqlite3* db_ = nullptr;
 };
 
@@ -235,7 +240,7 @@ std::int64_t Database::integer(const char* sql) {
   if (rc == SQLITE_NOTADB || (rc == SQLITE_OK && sqlite3_step(stmt) == SQLITE_NOTADB) ||
       sqlite3_errcode(db_) == SQLITE_NOTADB) {
     sqlite3_finalize(stmt);
-    throw InputError("--sqlite \"" + path_ + "\": is not an SQLite database (left as it is)");
+    throw InputError(named() + ": is not an SQLite database (left as it is)");
   }
   if (rc != SQLITE_OK) fail("cannot read the database header");
   const std::int64_t v = sqlite3_column_int64(stmt, 0);
@@ -245,11 +250,27 @@ std::int64_t Database::integer(const char* sql) {
 
 // A new (empty) database gets the layout; an existing one must be agvbench's, of a layout this
 // build knows. Anything else is refused before a row is written.
-void check_or_create_layout(Database& db) {
+// Whether the database is empty (a new file): true; agvbench's of this layout: false; else
+// InputError.
+bool check_layout(Database& db) {
   const std::int64_t app = db.integer("PRAGMA application_id");
   const std::int64_t version = db.integer("PRAGMA user_version");
   const std::int64_t objects = db.integer("SELECT count(*) FROM sqlite_master");
-  if (objects == 0 && app == 0) {
+  if (objects == 0 && app == 0) return true;
+  if (app != kResultsDbApplicationId)
+    throw InputError(db.named() +
+                     ": is an SQLite database of another application (application_id " +
+                     std::to_string(app) + ", holding " + std::to_string(objects) +
+                     " tables/indexes); agvbench appends only to its own databases");
+  if (version != kResultsDbVersion)
+    throw InputError(db.named() + ": holds agvbench database layout " + std::to_string(version) +
+                     "; this agvbench writes layout " + std::to_string(kResultsDbVersion) +
+                     " (export into a new database)");
+  return false;
+}
+
+void check_or_create_layout(Database& db) {
+  if (check_layout(db)) {
     db.exec("BEGIN IMMEDIATE", "cannot start a transaction");
     db.exec(kSchemaSql, "cannot create the tables");
     db.exec(("PRAGMA application_id = " + std::to_string(kResultsDbApplicationId)).c_str(),
@@ -257,17 +278,7 @@ void check_or_create_layout(Database& db) {
     db.exec(("PRAGMA user_version = " + std::to_string(kResultsDbVersion)).c_str(),
             "cannot set the layout version");
     db.exec("COMMIT", "cannot commit the tables");
-    return;
   }
-  if (app != kResultsDbApplicationId)
-    throw InputError("--sqlite \"" + db.path() +
-                     "\": is an SQLite database of another application (application_id " +
-                     std::to_string(app) + ", holding " + std::to_string(objects) +
-                     " tables/indexes); agvbench appends only to its own databases");
-  if (version != kResultsDbVersion)
-    throw InputError("--sqlite \"" + db.path() + "\": holds agvbench database layout " +
-                     std::to_string(version) + "; this agvbench writes layout " +
-                     std::to_string(kResultsDbVersion) + " (export into a new database)");
 }
 
 // FNV-1a over the runs' identities, outcomes and planning times: two exports of one journal give
@@ -459,7 +470,7 @@ void insert_paired(Database& db, std::int64_t id, const ExperimentRecord& e) {
 }  // namespace
 
 std::int64_t append_experiment(const std::string& db_path, const ExperimentRecord& e) {
-  Database db(db_path);
+  Database db(db_path, e.option);
   check_or_create_layout(db);
   const std::string hash = config_hash(*e.config);
   const std::string digest = runs_digest(*e.results);
@@ -473,7 +484,7 @@ std::int64_t append_experiment(const std::string& db_path, const ExperimentRecor
     existing.bind(1, hash).bind(2, digest);
     if (existing.row()) {
       const std::int64_t other = existing.column_integer(0);
-      throw InputError("--sqlite \"" + db_path + "\": experiment " + std::to_string(other) +
+      throw InputError(db.named() + ": experiment " + std::to_string(other) +
                        " already holds this sweep (config hash " + hash +
                        ", the same runs and planning times); nothing was written");
     }
@@ -487,6 +498,13 @@ std::int64_t append_experiment(const std::string& db_path, const ExperimentRecor
     sqlite3_exec(db.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
     throw;
   }
+}
+
+void check_results_db(const std::string& path, const std::string& option) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0 || st.st_size == 0) return;  // created when written
+  Database db(path, option, true);
+  check_layout(db);
 }
 
 void read_run_messages(const std::string& journal, const SweepResults& results,

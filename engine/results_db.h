@@ -29,6 +29,7 @@ struct ExperimentRecord {
   const RunMessages* messages = nullptr;   // may be null
   std::string source;                      // "run" or "export"
   nlohmann::json environment;              // the machine that wrote the rows
+  std::string option = "--sqlite";         // names the database in messages ("--db" for run)
 };
 
 // Appends the experiment in one transaction and returns its experiment_id. The sweep is named
@@ -38,6 +39,10 @@ struct ExperimentRecord {
 // application or of a newer layout; std::runtime_error (naming the database and SQLite's
 // message) for a failed write, after which the database is as it was.
 std::int64_t append_experiment(const std::string& db_path, const ExperimentRecord& experiment);
+
+// Before a sweep or an export spends its time: InputError unless PATH is missing, empty, or an
+// agvbench database of this layout (what append_experiment would refuse). Reads only.
+void check_results_db(const std::string& path, const std::string& option);
 
 // The messages of the records of `journal` (which restore_journal has already read and checked
 // against `results`), keyed as RunMessages.

@@ -69,6 +69,8 @@ check "run --db writes what export writes" sh -c "'$bin' export tiny1.jsonl --co
 printf 'not a database, a user file\n' >notes.txt
 expect_exit "export into a file that is not a database: exit 2" 2 "$bin" export tiny1.jsonl --config tiny.json --sqlite notes.txt
 check "... the file left as it was" test "$(cat notes.txt)" = "not a database, a user file"
+expect_exit "run --db into a file that is not a database: exit 2 before the sweep" 2 "$bin" run tiny.json --out never.json --db notes.txt --quiet
+check "... no report written, the file as it was" sh -c "test ! -e never.json && test \"\$(cat notes.txt)\" = 'not a database, a user file'"
 expect_exit "export over its own journal: exit 2" 2 "$bin" export tiny1.jsonl --config tiny.json --sqlite tiny1.jsonl
 expect_exit "export into a missing folder: exit 2" 2 "$bin" export tiny1.jsonl --config tiny.json --sqlite nowhere/r.db
 : >empty.jsonl

@@ -66,6 +66,10 @@ JSON
 check "run --db appends a second sweep as a second experiment" "$bin" run tiny.json --out tiny1.json --runs-out tiny1.jsonl --db results.db --quiet
 check "two experiments, runs of each" test "$(q "select group_concat(n) from (select count(*) n from runs group by experiment_id order by experiment_id)")" = "$lines,72"
 check "run --db writes what export writes" sh -c "'$bin' export tiny1.jsonl --config tiny.json --sqlite other.db >/dev/null && test \"\$(sqlite3 other.db 'select count(*) from runs')\" = 72 && test \"\$(sqlite3 other.db 'select count(*) from run_metrics')\" = \"\$(sqlite3 results.db 'select count(*) from run_metrics where run_id in (select run_id from runs where experiment_id = 2)')\""
+check "a small database of one sweep" "$bin" export tiny1.jsonl --config tiny.json --sqlite small.db
+expect_exit "a write that fails (file-size limit) is exit 1" 1 bash -c "ulimit -f 600; exec '$bin' export quick.jsonl --config '$src/configs/quick.json' --sqlite small.db"
+check "... naming the database" grep -q -- '--sqlite "small.db": ' last.err
+check "... which holds what it held, intact" test "$(sqlite3 small.db 'pragma integrity_check; select count(*) from experiments; select count(*) from runs' | tr '\n' ' ')" = "ok 1 72 "
 printf 'not a database, a user file\n' >notes.txt
 expect_exit "export into a file that is not a database: exit 2" 2 "$bin" export tiny1.jsonl --config tiny.json --sqlite notes.txt
 check "... the file left as it was" test "$(cat notes.txt)" = "not a database, a user file"

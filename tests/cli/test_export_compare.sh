@@ -66,6 +66,11 @@ JSON
 check "run --db appends a second sweep as a second experiment" "$bin" run tiny.json --out tiny1.json --runs-out tiny1.jsonl --db results.db --quiet
 check "two experiments, runs of each" test "$(q "select group_concat(n) from (select count(*) n from runs group by experiment_id order by experiment_id)")" = "$lines,72"
 check "run --db writes what export writes" sh -c "'$bin' export tiny1.jsonl --config tiny.json --sqlite other.db >/dev/null && test \"\$(sqlite3 other.db 'select count(*) from runs')\" = 72 && test \"\$(sqlite3 other.db 'select count(*) from run_metrics')\" = \"\$(sqlite3 results.db 'select count(*) from run_metrics where run_id in (select run_id from runs where experiment_id = 2)')\""
+cat >msg.json <<'JSON'
+{"name": "msg", "seed": 3, "generators": ["maze"], "sizes": [24], "densities": [0.3],
+ "maps_per_cell": 4, "planners": ["astar", {"name": "rrt", "params": {"max_iterations": 10}}]}
+JSON
+check "failure messages reach the database (run --db and export)" sh -c "'$bin' run msg.json --out msg.report --runs-out msg.jsonl --db msg.db --quiet && '$bin' export msg.jsonl --config msg.json --sqlite msg2.db >/dev/null && n=\$(grep -c '\"message\"' msg.jsonl) && test \$n -gt 0 && for d in msg.db msg2.db; do test \"\$(sqlite3 \$d \"select count(*) from runs where message like 'max_iterations%'\")\" = \$n || exit 1; done"
 check "a small database of one sweep" "$bin" export tiny1.jsonl --config tiny.json --sqlite small.db
 expect_exit "a write that fails (file-size limit) is exit 1" 1 bash -c "ulimit -f 600; exec '$bin' export quick.jsonl --config '$src/configs/quick.json' --sqlite small.db"
 check "... naming the database" grep -q -- '--sqlite "small.db": ' last.err

@@ -1,9 +1,12 @@
 // `agvbench list`: the planner and generator registries, as text or as one JSON object.
+#include <cstdio>
 #include <iostream>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "algos/registry.h"
+#include "core/input_error.h"
 #include "engine/commands.h"
 #include "generators/registry.h"
 
@@ -28,15 +31,68 @@ void print_params(const std::vector<ParamSpec>& params) {
 
 }  // namespace
 
+namespace {
+
+// The names asked for, each a planner or a generator; empty = all of them.
+struct Selection {
+  std::set<std::string> names;
+  bool all = true;
+  bool has(const std::string& name) const { return all || names.count(name) > 0; }
+};
+
+Selection select(const std::vector<std::string>& names) {
+  Selection s;
+  s.all = names.empty();
+  for (const auto& name : names) {
+    bool known = find_planner(name) != nullptr;
+    for (const auto& g : generator_registry()) known = known || g.name == name;
+    if (!known)
+      throw InputError(
+          "list: \"" + name +
+          "\" is neither a planner nor a generator (agvbench list --brief names them)");
+    s.names.insert(name);
+  }
+  return s;
+}
+
+nlohmann::json selected(const nlohmann::json& entries, const Selection& s) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& e : entries)
+    if (s.has(e.at("name").get<std::string>())) out.push_back(e);
+  return out;
+}
+
+}  // namespace
+
 int command_list(bool as_json) {
-  if (as_json) {
-    const nlohmann::json doc = {{"planners", registry_json()},
-                                {"generators", generator_registry_json()}};
+  ListOptions options;
+  options.json = as_json;
+  return command_list(options);
+}
+
+int command_list(const ListOptions& options) {
+  const Selection only = select(options.names);
+  if (options.json) {
+    const nlohmann::json doc = {{"planners", selected(registry_json(), only)},
+                                {"generators", selected(generator_registry_json(), only)}};
     std::cout << doc.dump(2) << "\n";
     return 0;
   }
-  std::cout << "planners:\n\n";
+  if (options.brief) {
+    for (const auto& info : planner_registry())
+      if (only.has(info.name))
+        std::printf("planner    %-24s %-12s %s\n", info.name.c_str(), to_string(info.kind),
+                    info.summary.c_str());
+    for (const auto& info : generator_registry())
+      if (only.has(info.name))
+        std::printf("generator  %-24s %-12s %s\n", info.name.c_str(), "", info.summary.c_str());
+    return 0;
+  }
+  bool any_planner = false;
+  for (const auto& info : planner_registry()) any_planner = any_planner || only.has(info.name);
+  if (any_planner) std::cout << "planners:\n\n";
   for (const auto& info : planner_registry()) {
+    if (!only.has(info.name)) continue;
     std::cout << info.name << "  -  " << info.summary << "\n    source: " << info.source;
     for (const auto& [name, meaning] : info.counters)
       std::cout << "\n    " << name << ": " << meaning;
@@ -44,9 +100,14 @@ int command_list(bool as_json) {
     print_params(info.params);
     std::cout << "\n";
   }
-  std::cout << "generators (a config's \"generators\" entry: a name or {\"name\": ..., "
-               "\"params\": {...}}):\n\n";
+  bool any_generator = false;
+  for (const auto& info : generator_registry())
+    any_generator = any_generator || only.has(info.name);
+  if (any_generator)
+    std::cout << "generators (a config's \"generators\" entry: a name or {\"name\": ..., "
+                 "\"params\": {...}}):\n\n";
   for (const auto& info : generator_registry()) {
+    if (!only.has(info.name)) continue;
     std::cout << info.name << "  -  " << info.summary << "\n";
     print_params(info.params);
     std::cout << "\n";

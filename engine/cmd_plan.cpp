@@ -256,9 +256,10 @@ int command_plan(const PlanCommand& cmd) {
         std::cout << "    " << kRunMetricNames[m] << " = " << o.metrics[m] << "\n";
     for (const auto& [name, value] : o.result.extra)
       std::cout << "    " << name << " = " << value << "\n";
-    std::cout << "    timing: plan_time_us = " << static_cast<double>(o.plan_time_ns) / 1e3;
+    // The CLI prints times in µs, the JSON keeps ns (README "Time units").
+    std::cout << "    timing: plan time " << static_cast<double>(o.plan_time_ns) / 1e3 << " µs";
     for (const auto& ph : o.result.phases)
-      std::cout << ", " << ph.name << "_us = " << static_cast<double>(ph.ns) / 1e3;
+      std::cout << ", " << ph.name << " " << static_cast<double>(ph.ns) / 1e3 << " µs";
     std::cout << "\n";
   }
   return 0;

@@ -12,9 +12,11 @@
 #include "algos/registry.h"
 #include "engine/cli_numbers.h"
 #include "engine/commands.h"
+#include "engine/environment.h"
 #include "engine/journal.h"
 #include "engine/output_paths.h"
 #include "engine/report.h"
+#include "engine/results_db.h"
 #include "engine/sweep_runner.h"
 
 #ifndef AGV_SOURCE_DIR
@@ -84,7 +86,10 @@ void check_run_paths(const RunCommand& cmd, const std::string& config_path,
                                  : OutputPath{cmd.runs_out.empty() ? "runs" : "--runs-out",
                                               options.runs_path, OutputKind::new_journal};
   check_paths({{"config file", config_path}},
-              {{cmd.out.empty() ? "report" : "--out", config.report_path}, journal});
+              {{cmd.out.empty() ? "report" : "--out", config.report_path},
+               journal,
+               {"--db", cmd.db, OutputKind::database}});
+  if (!cmd.db.empty()) check_results_db(cmd.db, "--db");
   ignore_file_size_signal();
 }
 
@@ -96,6 +101,20 @@ void write_report(const SweepConfig& config, const SweepResults& results) {
     if (results.journal_error.empty()) throw;
     throw std::runtime_error(results.journal_error + "; and the report: " + e.what());
   }
+}
+
+// run --db: the sweep as one experiment of the database, with the failure messages of its
+// journal when it wrote one (the slots keep no messages).
+void write_database(const RunCommand& cmd, const SweepConfig& config, const SweepResults& results,
+                    const std::string& journal) {
+  RunMessages messages;
+  if (!journal.empty()) read_run_messages(journal, results, messages);
+  const nlohmann::json report = build_report(config, results);
+  const std::int64_t id = append_experiment(cmd.db, {&config, &results, &report, &messages, "run",
+                                                     environment_json(results.threads), "--db"});
+  if (!cmd.quiet)
+    std::fprintf(stderr, "agvbench: experiment %lld of %s\n", static_cast<long long>(id),
+                 cmd.db.c_str());
 }
 
 }  // namespace
@@ -157,6 +176,10 @@ int command_run(const RunCommand& cmd) {
   }
   SweepResults results = run_sweep(config, options);
   write_report(config, results);
+  // An interrupted sweep is not appended: its resume is (the same runs and more).
+  if (!cmd.db.empty() && results.journal_error.empty() && !results.interrupted)
+    write_database(cmd, config, results,
+                   options.resume_path.empty() ? options.runs_path : options.resume_path);
   if (!results.journal_error.empty()) {
     // The runs the journal lost are not in the report either: a resume runs them again.
     const Coverage coverage = coverage_of(results);
@@ -178,6 +201,11 @@ int command_run(const RunCommand& cmd) {
                  !options.resume_path.empty() ? options.resume_path.c_str()
                  : options.runs_path.empty()  ? "JOURNAL (none was written: use --runs-out)"
                                               : options.runs_path.c_str());
+    if (!cmd.db.empty())
+      std::fprintf(stderr,
+                   "agvbench: nothing appended to %s (an interrupted sweep is appended when its "
+                   "--resume completes it)\n",
+                   cmd.db.c_str());
     return 130;
   }
   if (!cmd.quiet) {

@@ -83,21 +83,22 @@ int command_scen(const ScenCommand& cmd) {
                            : sorted.size() % 2
                                ? sorted[sorted.size() / 2]
                                : 0.5 * (sorted[sorted.size() / 2 - 1] + sorted[sorted.size() / 2]);
-  const nlohmann::json doc = {
-      {"map", cmd.map_file},
-      {"scen", cmd.scen_file},
-      {"planner", cmd.planner},
-      {"params", planner.params.values()},
-      {"queries", queries.size()},
-      {"failures", failures},
-      {"mismatches", mismatches},
-      {"max_abs_error", max_abs},
-      {"max_rel_error", max_rel},
-      {"tolerance", cmd.tolerance},
-      {"search_expansions", expansions},
-      {"collision_checks", checks},
-      {"first_mismatches", bad},
-      {"timing", {{"total_s", total_ns / 1e9}, {"median_query_us", median_ns / 1e3}}}};
+  const nlohmann::json doc = {{"map", cmd.map_file},
+                              {"scen", cmd.scen_file},
+                              {"planner", cmd.planner},
+                              {"params", planner.params.values()},
+                              {"queries", queries.size()},
+                              {"failures", failures},
+                              {"mismatches", mismatches},
+                              {"max_abs_error", max_abs},
+                              {"max_rel_error", max_rel},
+                              {"tolerance", cmd.tolerance},
+                              {"search_expansions", expansions},
+                              {"collision_checks", checks},
+                              {"first_mismatches", bad},
+                              {"timing",
+                               {{"total_ns", static_cast<std::int64_t>(total_ns)},
+                                {"median_query_ns", static_cast<std::int64_t>(median_ns)}}}};
   if (cmd.json) {
     std::cout << json_text(doc, 1) << "\n";
   } else {
@@ -107,7 +108,7 @@ int command_scen(const ScenCommand& cmd) {
         cmd.planner.c_str(), cmd.scen_file.c_str(), queries.size(),
         static_cast<long long>(mismatches), static_cast<long long>(failures), max_abs, max_rel,
         static_cast<long long>(expansions));
-    std::printf("timing: total %.3f s, median %.1f us per query\n", total_ns / 1e9,
+    std::printf("timing: total %.3f s, median %.1f µs per query\n", total_ns / 1e9,
                 median_ns / 1e3);
     for (const auto& b : bad) std::printf("  mismatch: %s\n", json_text(b).c_str());
   }

@@ -2,6 +2,7 @@
 // The subcommands of `agvbench`. Each returns the process exit code: 0 ok, 1 runtime failure,
 // 2 bad input. InputError escaping a command is turned into exit 2 by main.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct RunCommand {
   double isolate_timeout_s = 0.0;  // 0: twice the config's time limit + 1 s
   long long isolate_memory_mb = 4096;
   bool quiet = false;
+  std::string db;  // SQLite database the sweep is appended to as one experiment (results_db.h)
 };
 // Exit code 130 when interrupted by SIGINT/SIGTERM (the report is written, marked incomplete).
 int command_run(const RunCommand& cmd);
@@ -32,6 +34,34 @@ int command_merge(const std::string& config_path, const std::vector<std::string>
 std::string locate_config(const std::string& path);
 
 int command_validate(const std::string& config_path);
+
+// A sweep's journals as one experiment of an SQLite database (engine/results_db.h).
+struct ExportCommand {
+  std::vector<std::string> journals;
+  std::string config;
+  std::string sqlite;
+};
+int command_export(const ExportCommand& cmd);
+
+// Two reports compared (engine/report_compare.h): exit 0 no difference, 1 a non-timing
+// difference or a timing regression, 2 bad input (configs that differ beyond planner params).
+struct CompareCommand {
+  std::string before;
+  std::string after;
+  std::vector<std::string> runs_before;  // the sweeps' journals: per-run times, paired tests
+  std::vector<std::string> runs_after;
+  std::optional<double> fail_on_regression_pct;  // none: timing never fails
+  bool json = false;
+};
+int command_compare(const CompareCommand& cmd);
+
+// `list NAME... [--brief]`: only the named planners or generators (unknown: InputError).
+struct ListOptions {
+  bool json = false;
+  bool brief = false;
+  std::vector<std::string> names;
+};
+int command_list(const ListOptions& options);
 
 // Planners and generators; as_json: one object {"planners": [...], "generators": [...]}.
 int command_list(bool as_json);

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -44,7 +46,27 @@ std::string compiler() {
 #endif
 }
 
+// 1, 5 and 15 minute load averages; null where the system does not say.
+nlohmann::json load_average() {
+  double load[3] = {};
+  if (getloadavg(load, 3) != 3) return nullptr;
+  return {load[0], load[1], load[2]};
+}
+
 }  // namespace
+
+std::string utc_now_iso8601() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return buf;
+}
+
+std::string version_text() {
+  return std::string("agvbench ") + AGV_VERSION + " (git " + kGitRevision + ", " + compiler() + ")";
+}
 
 nlohmann::json environment_json(int threads) {
   return {{"compiler", compiler()},
@@ -53,7 +75,9 @@ nlohmann::json environment_json(int threads) {
           {"cpu_model", cpu_model()},
           {"hardware_threads", std::thread::hardware_concurrency()},
           {"threads", threads},
-          {"host", host_name()}};
+          {"host", host_name()},
+          {"date_utc", utc_now_iso8601()},
+          {"load_average", load_average()}};
 }
 
 }  // namespace agv

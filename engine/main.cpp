@@ -6,6 +6,7 @@
 #include "core/input_error.h"
 #include "engine/cli_numbers.h"
 #include "engine/commands.h"
+#include "engine/environment.h"
 #include "engine/isolated_worker.h"
 
 namespace {
@@ -30,12 +31,15 @@ constexpr agv::NumberRange kIsolateTimeoutRange{agv::kTimeLimitRange.lo,
 constexpr agv::IntRange kIsolateMemoryRange{64, 1LL << 40};
 // scen --tolerance: relative and absolute; 1 already accepts any length up to twice the optimum.
 constexpr agv::NumberRange kToleranceRange{0.0, 1.0};
+// compare --fail-on-regression: percent of planning time.
+constexpr agv::NumberRange kRegressionPctRange{0.0, 1e6};
 
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"agvbench: a parallel benchmark engine for AGV grid path planners"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", agv::version_text());
 
   agv::RunCommand run;
   auto* run_cmd = app.add_subcommand("run", "run a sweep and write its JSON report");
@@ -56,6 +60,7 @@ int main(int argc, char** argv) {
       ->add_option("--isolate-memory", run.isolate_memory_mb, "address-space cap per worker, MiB")
       ->transform(integer_in(kIsolateMemoryRange));
   run_cmd->add_flag("--quiet", run.quiet, "no progress meter and no summary table");
+  run_cmd->add_option("--db", run.db, "SQLite database: append the sweep as one experiment");
 
   std::string merge_config, merge_out;
   std::vector<std::string> merge_journals;
@@ -80,6 +85,34 @@ int main(int argc, char** argv) {
       app.add_subcommand("list", "list planners and map generators, their parameters and defaults");
   list_cmd->add_flag("--json", list_json,
                      "print the registries as one JSON object {planners, generators}");
+  agv::ListOptions list;
+  list_cmd->add_option("names", list.names, "only these planners or generators");
+  list_cmd->add_flag("--brief", list.brief, "one line per planner and generator");
+
+  agv::ExportCommand export_args;
+  auto* export_cmd =
+      app.add_subcommand("export", "append a sweep's journals to an SQLite database");
+  export_cmd->add_option("journals", export_args.journals, "JSON Lines journals")->required();
+  export_cmd->add_option("--config", export_args.config, "the sweep config of the journals")
+      ->required();
+  export_cmd->add_option("--sqlite", export_args.sqlite, "database (created or appended to)")
+      ->required();
+
+  agv::CompareCommand compare;
+  auto* compare_cmd = app.add_subcommand(
+      "compare", "compare two reports: non-timing differences and planning-time ratios");
+  compare_cmd->add_option("before", compare.before, "report BEFORE")->required();
+  compare_cmd->add_option("after", compare.after, "report AFTER")->required();
+  compare_cmd->add_option("--runs-before", compare.runs_before,
+                          "BEFORE's journals (per-run times: paired tests)");
+  compare_cmd->add_option("--runs-after", compare.runs_after, "AFTER's journals");
+  double regression_pct = 0.0;
+  auto* regression_opt =
+      compare_cmd
+          ->add_option("--fail-on-regression", regression_pct,
+                       "exit 1 when planning time grows by more than PCT percent (default: never)")
+          ->transform(number_in(kRegressionPctRange));
+  compare_cmd->add_flag("--json", compare.json, "print the comparison as JSON");
 
   agv::PlanCommand plan;
   auto* plan_cmd = app.add_subcommand("plan", "run planners on one map and show the paths");
@@ -132,7 +165,15 @@ int main(int argc, char** argv) {
     if (*merge_cmd) return agv::command_merge(merge_config, merge_journals, merge_out);
     if (*worker_cmd) return agv::worker_main(worker_memory);
     if (*validate_cmd) return agv::command_validate(validate_path);
-    if (*list_cmd) return agv::command_list(list_json);
+    if (*list_cmd) {
+      list.json = list_json;
+      return agv::command_list(list);
+    }
+    if (*export_cmd) return agv::command_export(export_args);
+    if (*compare_cmd) {
+      if (*regression_opt) compare.fail_on_regression_pct = regression_pct;
+      return agv::command_compare(compare);
+    }
     if (*plan_cmd) return agv::command_plan(plan);
     if (*scen_cmd) return agv::command_scen(scen);
   } catch (const agv::InputError& e) {

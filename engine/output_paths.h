@@ -19,10 +19,11 @@ enum class OutputKind {
   replaced,     // written whole (a report): an existing regular file is replaced
   new_journal,  // a journal started afresh: refused when it exists and is not empty
   appended,     // a journal resumed: it must exist, it is read, then appended to
+  database,     // a results database: created, or appended to (never truncated)
 };
 
 // A file the command writes; `what` is the option or config field that named it ("--out",
-// "report", "--runs-out", "runs", "--resume", "--json-out").
+// "report", "--runs-out", "runs", "--resume", "--json-out", "--sqlite", "--db").
 struct OutputPath {
   std::string what;
   std::string path;

@@ -172,6 +172,52 @@ WilcoxonResult wilcoxon_signed_rank(std::span<const double> differences,
   return r;
 }
 
+MannWhitneyResult mann_whitney_u(std::span<const double> x, std::span<const double> y) {
+  MannWhitneyResult r;
+  r.nx = x.size();
+  r.ny = y.size();
+  if (x.empty() || y.empty()) return r;
+  struct Value {
+    double v;
+    bool from_x;
+  };
+  std::vector<Value> all;
+  all.reserve(x.size() + y.size());
+  for (double v : x) all.push_back({v, true});
+  for (double v : y) all.push_back({v, false});
+  std::stable_sort(all.begin(), all.end(),
+                   [](const Value& a, const Value& b) { return a.v < b.v; });
+  const std::size_t n = all.size();
+  CompensatedSum rank_sum_x;
+  double tie_term = 0.0;
+  for (std::size_t i = 0; i < n;) {
+    std::size_t j = i + 1;
+    while (j < n && all[j].v == all[i].v) ++j;
+    const double mid_rank = (static_cast<double>(i + 1) + static_cast<double>(j)) / 2.0;
+    for (std::size_t k = i; k < j; ++k)
+      if (all[k].from_x) rank_sum_x.add(mid_rank);
+    const double t = static_cast<double>(j - i);
+    tie_term += t * t * t - t;
+    i = j;
+  }
+  const double nx = static_cast<double>(r.nx), ny = static_cast<double>(r.ny);
+  const double nn = nx + ny;
+  r.u = rank_sum_x.value() - nx * (nx + 1.0) / 2.0;
+  const double variance = nx * ny / 12.0 * ((nn + 1.0) - tie_term / (nn * (nn - 1.0)));
+  if (!(variance > 0.0)) {
+    r.p = 1.0;  // every value tied: no evidence either way
+    return r;
+  }
+  double z = r.u - nx * ny / 2.0;
+  const double correction = z > 0.0 ? 0.5 : z < 0.0 ? -0.5 : 0.0;
+  z = (z - correction) / std::sqrt(variance);
+  const boost::math::normal_distribution<double> normal;
+  const double lower = boost::math::cdf(normal, z);
+  const double upper = boost::math::cdf(boost::math::complement(normal, z));
+  r.p = std::min(1.0, 2.0 * std::min(lower, upper));
+  return r;
+}
+
 PairedComparison compare_paired(std::span<const double> candidate, std::span<const double> baseline,
                                 Better better, RatioKind ratio, double tie_tolerance) {
   if (candidate.size() != baseline.size())

@@ -82,6 +82,19 @@ struct WilcoxonResult {
 WilcoxonResult wilcoxon_signed_rank(std::span<const double> differences,
                                     double rank_tie_tolerance = 0.0);
 
+// Two-sided Mann-Whitney U (Wilcoxon rank-sum) test of two independent samples: U = the rank
+// sum of x minus nx(nx+1)/2, mid-ranks for ties, p from the normal approximation with tie
+// correction sigma^2 = nx ny / 12 ((n + 1) - sum(t^3 - t) / (n (n - 1))) and continuity
+// correction 0.5 (R's wilcox.test(x, y, exact = FALSE, correct = TRUE)). p NaN when either
+// sample is empty; 1 when every value is tied. Precondition: no NaN.
+struct MannWhitneyResult {
+  std::size_t nx = 0;
+  std::size_t ny = 0;
+  double u = 0.0;  // R's W
+  double p = kNaN;
+};
+MannWhitneyResult mann_whitney_u(std::span<const double> x, std::span<const double> y);
+
 // Which way a metric improves (docs/METRICS.md "Metric directions").
 enum class Better { smaller, larger };
 

@@ -235,7 +235,10 @@ bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
                const SweepOptions& options, JournalWriter& journal, FirstFailure& failure) {
   const bool isolated = options.isolation.enabled;
   const WorkerLaunch launch = worker_launch(state.context.config, options.isolation);
-  ProgressMeter progress(static_cast<std::int64_t>(todo.size()), options.progress);
+  std::int64_t runs_to_do = 0;  // the meter counts runs: map tasks differ in planners (scopes)
+  for (const std::int64_t task : todo)
+    runs_to_do += static_cast<std::int64_t>(pending_planners(state.results, task).size());
+  ProgressMeter progress(runs_to_do, options.progress);
   tbb::enumerable_thread_specific<Worker> workers([&] {
     Worker w;
     if (isolated) {
@@ -254,6 +257,7 @@ bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
       return;
     }
     const std::int64_t task = todo[i];
+    const std::size_t planners_of_task = pending_planners(state.results, task).size();
     try {
       Worker& w = workers.local();  // may start an isolation worker, which may fail
       const std::vector<std::size_t> planners = pending_planners(state.results, task);
@@ -275,7 +279,7 @@ bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
     } catch (const std::exception& e) {
       failure.record(state.results.plan, task, e);
     }
-    progress.advance();
+    progress.advance(static_cast<std::int64_t>(planners_of_task));
   });
   progress.finish();
   return stopped.load() || state.cut.load();

@@ -1,0 +1,59 @@
+// `agvbench compare BEFORE AFTER`: two reports of one config, result by result, and their
+// planning times with a test (engine/report_compare.h).
+#include <cstdio>
+#include <iostream>
+
+#include "core/input_error.h"
+#include "core/text_file.h"
+#include "engine/commands.h"
+#include "engine/report_compare.h"
+
+namespace agv {
+
+namespace {
+
+nlohmann::json read_report(const std::string& path, const std::string& what) {
+  const std::string text = read_text_file(path, what);
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(what + " \"" + path + "\": malformed JSON (" + e.what() + ")");
+  }
+}
+
+}  // namespace
+
+int command_compare(const CompareCommand& cmd) {
+  if (cmd.runs_before.empty() != cmd.runs_after.empty())
+    throw InputError(
+        "--runs-before and --runs-after go together: per-run times pair up only when both "
+        "sweeps' journals are given");
+  const nlohmann::json before = read_report(cmd.before, "BEFORE");
+  const nlohmann::json after = read_report(cmd.after, "AFTER");
+  RunTimes times_before, times_after;
+  const bool with_runs = !cmd.runs_before.empty();
+  if (with_runs) {
+    // Inside compare_reports the reports are checked first; the journals need their hashes.
+    if (!before.is_object() || !before.contains("config") || !after.is_object() ||
+        !after.contains("config"))
+      throw InputError("BEFORE or AFTER is not an agvbench report (no \"config\")");
+    for (const auto& j : cmd.runs_before)
+      read_run_times(j, report_config_hash(before), times_before);
+    for (const auto& j : cmd.runs_after) read_run_times(j, report_config_hash(after), times_after);
+  }
+  const ReportComparison c =
+      compare_reports(before, after, with_runs ? &times_before : nullptr,
+                      with_runs ? &times_after : nullptr, cmd.fail_on_regression_pct);
+  if (cmd.json) {
+    nlohmann::json doc = comparison_json(c);
+    doc["before"] = cmd.before;
+    doc["after"] = cmd.after;
+    std::cout << doc.dump(1) << "\n";
+  } else {
+    std::cout << "agvbench compare: " << cmd.before << " -> " << cmd.after << "\n"
+              << comparison_text(c);
+  }
+  return c.exit_code();
+}
+
+}  // namespace agv

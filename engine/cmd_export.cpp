@@ -1,0 +1,45 @@
+// `agvbench export`: a sweep's journals as one experiment of an SQLite database.
+#include <cstdio>
+
+#include "core/input_error.h"
+#include "engine/commands.h"
+#include "engine/environment.h"
+#include "engine/journal.h"
+#include "engine/output_paths.h"
+#include "engine/report.h"
+#include "engine/results_db.h"
+
+namespace agv {
+
+int command_export(const ExportCommand& cmd) {
+  const std::string located = locate_config(cmd.config);
+  const SweepConfig config = load_config(located);
+  std::vector<InputPath> inputs = {{"config file", located}};
+  for (const auto& j : cmd.journals) inputs.push_back({"journal", j});
+  check_paths(inputs, {{"--sqlite", cmd.sqlite, OutputKind::database}});
+  check_results_db(cmd.sqlite, "--sqlite");
+  ignore_file_size_signal();
+  SweepResults results = empty_results(config);
+  const std::string hash = config_hash(config);
+  RunMessages messages;
+  for (const auto& j : cmd.journals) {
+    restore_journal(j, hash, results);
+    read_run_messages(j, results, messages);
+  }
+  update_completeness(results);
+  if (coverage_of(results).runs_present == 0)
+    throw InputError("the journals hold no run of this config; nothing exported");
+  const nlohmann::json report = build_report(config, results);
+  // Journals record no machine: the environment is the exporting one's (source "export").
+  const std::int64_t id = append_experiment(
+      cmd.sqlite, {&config, &results, &report, &messages, "export", environment_json(0)});
+  const Coverage coverage = coverage_of(results);
+  std::printf("exported %zu journal%s as experiment %lld of %s: %lld of %lld runs%s\n",
+              cmd.journals.size(), cmd.journals.size() == 1 ? "" : "s", static_cast<long long>(id),
+              cmd.sqlite.c_str(), static_cast<long long>(coverage.runs_present),
+              static_cast<long long>(coverage.runs_expected),
+              results.complete ? "" : " (INCOMPLETE: complete = 0 in the database)");
+  return 0;
+}
+
+}  // namespace agv

@@ -582,8 +582,8 @@ def verdict(res, comp, paper_value):
     edge = p5 if paper_value < p5 else p95
     side = "below" if paper_value < p5 else "above"
     if statistic == "ratio":
-        by = f"by a factor {max(edge, paper_value) / min(edge, paper_value):.2f}" if paper_value > 0 and edge > 0 \
-            else f"by {abs(edge - paper_value):.3f}"
+        by = (f"by {(max(edge, paper_value) / min(edge, paper_value) - 1) * 100:.1f}% of the ratio"
+              if paper_value > 0 and edge > 0 else f"by {abs(edge - paper_value):.3f}")
     else:
         by = f"by {abs(edge - paper_value):.3f}"
     return DIRECTION, (f"significantly {claimed}, but the paper's {show(paper_value, statistic)} lies {side} "

@@ -167,8 +167,16 @@ int command_plan(const PlanCommand& cmd) {
       cell.spec.endpoints = EndpointMode::corners;
     } else if (cmd.endpoints == "random") {
       cell.spec.endpoints = EndpointMode::random;
+    } else if (cmd.endpoints == "fixed") {
+      // A sweep's "fixed" rule: --start and --goal are the cells the generator keeps free.
+      if (cmd.start.empty() || cmd.goal.empty())
+        throw InputError("--endpoints fixed: --start and --goal are required");
+      cell.spec.endpoints = EndpointMode::fixed;
+      cell.spec.start = parse_cell(cmd.start, "--start");
+      cell.spec.goal = parse_cell(cmd.goal, "--goal");
     } else {
-      throw InputError("--endpoints: expected corners or random, got \"" + cmd.endpoints + "\"");
+      throw InputError("--endpoints: expected corners, random or fixed, got \"" + cmd.endpoints +
+                       "\"");
     }
     Rng rng = map_rng(static_cast<std::uint64_t>(cmd.seed), cell, cmd.map_index);
     MapInstance inst;

@@ -125,7 +125,8 @@ int main(int argc, char** argv) {
   plan_cmd->add_option("--size", plan.size, "N or WxH");
   plan_cmd->add_option("--density", plan.density, "obstacle density")
       ->transform(number_in(agv::kDensityRange));
-  plan_cmd->add_option("--endpoints", plan.endpoints, "corners or random");
+  plan_cmd->add_option("--endpoints", plan.endpoints,
+                       "corners, random, or fixed (the cells of --start and --goal)");
   plan_cmd->add_option("--seed", plan.seed, "sweep seed")->transform(integer_in(agv::kSeedRange));
   plan_cmd->add_option("--map-index", plan.map_index, "map index within its sweep cell")
       ->transform(integer_in(agv::kMapIndexRange));

@@ -187,9 +187,28 @@ CollisionModel parse_collision(const json& j) {
 void parse_map_options(const json& j, MapSpec& map) {
   ObjectReader r(j, "map.");
   if (j.is_object()) refuse_moved_shape_params(j);
-  const std::string endpoints = r.choice("endpoints", "corners", {"corners", "random"});
-  map.endpoints = endpoints == "corners" ? EndpointMode::corners : EndpointMode::random;
+  const std::string endpoints = r.choice("endpoints", "corners", {"corners", "random", "fixed"});
+  map.endpoints = endpoints == "corners"  ? EndpointMode::corners
+                  : endpoints == "random" ? EndpointMode::random
+                                          : EndpointMode::fixed;
   map.min_distance = r.number("min_distance", 0.0, 0.0, 1e6);
+  // Fixed endpoints: 0-based [x, y] cells (x right, y down, as `plan --start` and the records);
+  // whether they fit each size is checked with the cells (check_cells).
+  for (const auto& [key, cell] : {std::pair{"start", &map.start}, std::pair{"goal", &map.goal}}) {
+    const bool given = r.has(key);
+    if (given != (map.endpoints == EndpointMode::fixed))
+      throw InputError(r.field(key) + (given ? ": only with \"endpoints\": \"fixed\""
+                                             : ": missing (\"endpoints\": \"fixed\" needs "
+                                               "\"start\" and \"goal\" as [x, y])"));
+    if (!given) continue;
+    const json& v = r.raw(key);
+    if (!v.is_array() || v.size() != 2)
+      throw InputError(r.field(key) + ": expected [x, y] (0-based cells), got " + v.dump());
+    cell->x = static_cast<int>(
+        ObjectReader::check_integer(v[0], r.field(key) + "[0]", 0, kMapSideRange.hi - 1));
+    cell->y = static_cast<int>(
+        ObjectReader::check_integer(v[1], r.field(key) + "[1]", 0, kMapSideRange.hi - 1));
+  }
   map.require_solvable = r.boolean("require_solvable", true);
   map.solvable_rule =
       *corner_rule_from_string(r.choice("solvable_rule", std::string(to_string(map.solvable_rule)),
@@ -388,6 +407,23 @@ std::vector<PlannerEntry> parse_planners(ObjectReader& r, const SweepConfig& swe
   return planners;
 }
 
+// "sources": where each value of the config comes from (a paper, its section or table), as free
+// text: an object whose values are strings or objects of the same kind. Commentary: echoed in
+// the report's config, left out of the config hash.
+json parse_sources(const json& j, const std::string& where) {
+  if (!j.is_object())
+    throw InputError(where + ": expected an object of {\"field\": \"where its value comes from\"}");
+  for (const auto& [key, value] : j.items()) {
+    if (value.is_object()) {
+      parse_sources(value, where + "." + key);
+    } else if (!value.is_string()) {
+      throw InputError(where + "." + key + ": expected a string (free text) or an object, got " +
+                       value.dump());
+    }
+  }
+  return j;
+}
+
 }  // namespace
 
 SweepConfig parse_config(const json& j) {
@@ -434,6 +470,7 @@ SweepConfig parse_config(const json& j) {
   c.report_path = r.string("report", c.report_path);
   c.runs_path = r.string("runs", c.runs_path);
   if (c.report_path.empty()) throw InputError("report: must not be empty");
+  if (r.has("sources")) c.sources = parse_sources(r.raw("sources"), "sources");
   r.finish();
   // The size first: a config too large to hold may be too large to walk cell by cell.
   check_sweep_size(c);
@@ -524,15 +561,19 @@ SweepConfig load_config(const std::string& path) {
 
 namespace {
 
+const char* endpoints_name(EndpointMode mode) {
+  return mode == EndpointMode::corners  ? "corners"
+         : mode == EndpointMode::random ? "random"
+                                        : "fixed";
+}
+
 json sizes_json(const std::vector<GridSize>& sizes) {
   json out = json::array();
   for (const auto& s : sizes) out.push_back({s.width, s.height});
   return out;
 }
 
-}  // namespace
-
-json config_as_run(const SweepConfig& c) {
+json config_fields(const SweepConfig& c) {
   json planners = json::array();
   for (const auto& p : c.planners) {
     json entry = {{"label", p.label}, {"name", p.name}, {"params", p.resolved}};
@@ -563,7 +604,7 @@ json config_as_run(const SweepConfig& c) {
            {{"corner_rule", std::string(to_string(c.collision.corner_rule))},
             {"clearance", c.collision.clearance}}},
           {"map",
-           {{"endpoints", m.endpoints == EndpointMode::corners ? "corners" : "random"},
+           {{"endpoints", endpoints_name(m.endpoints)},
             {"min_distance", m.min_distance},
             {"require_solvable", m.require_solvable},
             {"solvable_rule", std::string(to_string(m.solvable_rule))},
@@ -578,8 +619,24 @@ json config_as_run(const SweepConfig& c) {
             {"turn_speed_radps", c.motion.turn_speed_radps}}}};
 }
 
+}  // namespace
+
+// The fields above, plus what only some configs have, written only when present so that the
+// other configs keep their hash: fixed endpoints' cells and the "sources" commentary.
+json config_as_run(const SweepConfig& c) {
+  json out = config_fields(c);
+  if (c.map.endpoints == EndpointMode::fixed) {
+    out["map"]["start"] = {c.map.start.x, c.map.start.y};
+    out["map"]["goal"] = {c.map.goal.x, c.map.goal.y};
+  }
+  if (!c.sources.empty()) out["sources"] = c.sources;
+  return out;
+}
+
 std::string config_hash(const SweepConfig& c) {
-  const std::uint64_t h = stable_hash(config_as_run(c).dump());
+  json as_run = config_as_run(c);
+  as_run.erase("sources");  // commentary: a reworded source is the same sweep
+  const std::uint64_t h = stable_hash(as_run.dump());
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
   return buf;

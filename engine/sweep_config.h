@@ -88,6 +88,9 @@ struct SweepConfig {
   std::string baseline;        // planner label the paired comparisons use
   double time_limit_s = 10.0;  // per run, cooperative
   MotionTimeParams motion;
+  // "sources": free text saying where each value comes from (a paper's section or table);
+  // echoed in the report's config, not part of the config hash. Empty = none given.
+  nlohmann::json sources = nlohmann::json::object();
   // Execution settings: they change how a sweep runs, never what it reports.
   int threads = 0;  // 0 = all hardware threads
   std::string report_path = "reports/out/report.json";
@@ -103,8 +106,9 @@ SweepConfig load_config(const std::string& path);
 // report that the determinism guarantee covers.
 nlohmann::json config_as_run(const SweepConfig& config);
 
-// Stable hash of config_as_run (journal compatibility, task ids). Only the generators the sweep
-// uses enter it, so a generator or parameter added to the registry leaves journals valid.
+// Stable hash of config_as_run (journal compatibility, task ids), "sources" left out (it is
+// commentary). Only the generators the sweep uses enter it, so a generator or parameter added to
+// the registry leaves journals valid.
 std::string config_hash(const SweepConfig& config);
 
 }  // namespace agv

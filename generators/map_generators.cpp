@@ -7,13 +7,18 @@
 // Endpoints: `corners` = (0, H-1) -> (W-1, 0), reserved free before the map is drawn.
 // `random` = two distinct free cells drawn uniformly, redrawn (up to kEndpointTries pairs) until
 // their centres are at least min_distance apart; a map where that fails counts as a rejection.
+// `fixed` = spec.start -> spec.goal, reserved free like the corners; a generator that blocks a
+// reserved cell anyway (maze walls, room walls) has its map rejected and redrawn, the endpoints
+// never move.
 // require_solvable: a map whose endpoints do not connect under solvable_rule is rejected and a
 // new one drawn from the same Rng; after max_attempts maps, std::runtime_error.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "core/connectivity.h"
 #include "core/input_error.h"
@@ -59,6 +64,22 @@ Params validate(const MapSpec& s, const GeneratorInfo*& info) {
     throw std::invalid_argument(cat("min_distance: ", s.min_distance, " is outside [0, ", diagonal,
                                     "] (the ", s.width, "x", s.height,
                                     " grid's corner-to-corner distance)"));
+  }
+  if (s.endpoints == EndpointMode::fixed) {
+    const auto outside = [&](const Cell& c) {
+      return c.x < 0 || c.y < 0 || c.x >= s.width || c.y >= s.height;
+    };
+    for (const auto& [name, c] : {std::pair{"start", s.start}, std::pair{"goal", s.goal}}) {
+      if (outside(c)) {
+        throw std::invalid_argument(cat(name, ": [", c.x, ", ", c.y, "] is outside the ", s.width,
+                                        "x", s.height, " grid (0-based cells: x in [0, ",
+                                        s.width - 1, "], y in [0, ", s.height - 1, "])"));
+      }
+    }
+    if (s.start == s.goal) {
+      throw std::invalid_argument(
+          cat("goal: [", s.goal.x, ", ", s.goal.y, "] is the start cell (they must differ)"));
+    }
   }
   if (s.max_attempts < 1) {
     throw std::invalid_argument(cat("max_attempts: ", s.max_attempts, " must be at least 1"));
@@ -112,12 +133,14 @@ MapInstance make_map(const MapSpec& spec, Rng& rng) {
   canvas.reset(spec.width, spec.height, false);
   std::vector<int> pool;
   MapContext ctx{spec.width, spec.height, rng, canvas, {}, 0, pool};
-  const Cell corner_start{0, spec.height - 1};
-  const Cell corner_goal{spec.width - 1, 0};
-  const bool corners = spec.endpoints == EndpointMode::corners;
+  const bool fixed = spec.endpoints == EndpointMode::fixed;
+  const Cell corner_start = fixed ? spec.start : Cell{0, spec.height - 1};
+  const Cell corner_goal = fixed ? spec.goal : Cell{spec.width - 1, 0};
+  const bool corners = spec.endpoints != EndpointMode::random;  // corners or fixed: reserved
   if (corners) {
-    ctx.reserved = {canvas.index(corner_goal.x, corner_goal.y),
-                    canvas.index(corner_start.x, corner_start.y)};  // ascending
+    const int a = canvas.index(corner_start.x, corner_start.y);
+    const int b = canvas.index(corner_goal.x, corner_goal.y);
+    ctx.reserved = {std::min(a, b), std::max(a, b)};  // ascending
   }
   const std::int64_t m =
       static_cast<std::int64_t>(spec.width) * spec.height - std::ssize(ctx.reserved);
@@ -125,10 +148,15 @@ MapInstance make_map(const MapSpec& spec, Rng& rng) {
 
   ConnectivityScratch scratch;
   bool endpoints_failed = false;
+  int blocked_maps = 0;  // fixed endpoints a generator blocked anyway
   for (int attempt = 0; attempt < spec.max_attempts; ++attempt) {
     info->generate(shape, ctx);
     Cell start = corner_start;
     Cell goal = corner_goal;
+    if (fixed && (canvas.blocked(start.x, start.y) || canvas.blocked(goal.x, goal.y))) {
+      ++blocked_maps;
+      continue;
+    }
     if (!corners && !draw_random_endpoints(ctx, spec.min_distance, start, goal)) {
       endpoints_failed = true;
       continue;
@@ -150,6 +178,10 @@ MapInstance make_map(const MapSpec& spec, Rng& rng) {
   }
   const std::string what =
       cat(spec.generator, " ", spec.width, "x", spec.height, " at density ", spec.density);
+  if (blocked_maps == spec.max_attempts) {
+    throw std::runtime_error(cat("fixed endpoints: the generator blocked start or goal on all ",
+                                 spec.max_attempts, " maps (", what, ")"));
+  }
   if (endpoints_failed) {
     throw std::runtime_error(
         cat("random endpoints: no two free cells min_distance = ", spec.min_distance,

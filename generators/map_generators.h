@@ -16,6 +16,8 @@ enum class EndpointMode {
   corners,  // the papers' protocol: bottom-left cell (0, height-1) to top-right cell (width-1, 0),
             // both kept free (the generator never places obstacles there)
   random,   // uniform free cells at least min_distance (Euclidean, cells) apart
+  fixed,    // MapSpec::start and goal (0-based cells), reserved free as the corners are; a map
+            // whose generator still blocks one (a maze wall) is redrawn like an unsolvable one
 };
 
 struct MapSpec {
@@ -28,6 +30,8 @@ struct MapSpec {
   double cell_edge = 1.0;
   EndpointMode endpoints = EndpointMode::corners;
   double min_distance = 0.0;  // random endpoints only
+  Cell start;                 // fixed endpoints only: 0-based cells, x right, y down
+  Cell goal;
   bool require_solvable = false;
   CornerRule solvable_rule = CornerRule::no_corner_cut;  // the run's strictest corner rule
   int max_attempts = 1000;  // require_solvable: regenerations before giving up

@@ -2,7 +2,7 @@
 """Check the papers' headline claims (reports/claims.json) against agvbench sweep reports.
 
     /usr/bin/python3 reports/check_claims.py REPORT.json [RUNS.jsonl] [REPORT2.json [RUNS2.jsonl]] ...
-        [--claims reports/claims.json] [--out reports/CLAIMS.md] [--json RESULTS.json]
+        [--claims reports/claims.json] [--out reports/CLAIMS.md] [--json RESULTS.json] [--all-as random]
 
 A RUNS.jsonl (the sweep's `--runs-out` per-run records) placed right after a report belongs to
 that report; it is needed only for comparisons the report does not pair itself (a baseline other
@@ -24,11 +24,36 @@ figure is pooled over every matching cell of every report:
   difference (e.g. clearance): paired differences from RUNS.jsonl if given, else candidate mean
       minus baseline mean from the cell summaries with a Welch interval (unpaired: conservative).
 
-Verdict: 'not comparable' (a planner or metric is missing, no matching cells, fewer than
-min_pairs pairs); 'does not hold' when the 95% interval does not lie entirely on the claimed side
-of no-effect (1 for ratios, 0 for differences), or when it does but the paper's figure is a
-larger effect than the whole interval (the effect is real but smaller than claimed); 'holds'
-otherwise. Claims with check 'direction' skip the magnitude step.
+Set-ups: each claim names two sweep configs (claims.json "setup"): "paper", its paper's own
+set-up (configs/paper-00N.json), and "random", our random-map protocol (configs/paper-00N-random.json).
+A report belongs to a set-up by its config's name (--all-as SETUP: every report stands for that
+set-up, as for a sample sweep); each claim is graded on each set-up separately
+(compare.paper_cells, where given, replaces compare.cells on the paper's set-up; "cells" may be a
+list of filters, any of which a cell may match). compare.offset is added to every per-run value
+before the ratio (paper 004's turns = key points - 2); it forces the per-run route.
+
+Verdicts, five levels:
+  'reproduced'      the 95% interval lies on the claimed side of no-effect (1 for ratios, 0 for
+                    differences) AND the paper's figure lies inside our per-map 5-95% range of the
+                    same quantity: each map's candidate/baseline ratio (or difference) from the
+                    per-run records, pooled over the matching cells. A paper's figure is one map's
+                    (or a few maps' mean): it is compared with what one map of ours gives, not
+                    with the interval of a thousands-of-maps mean, which no single map need lie in.
+                    A claim with no figure (the paper states a direction only) is reproduced by a
+                    significant effect in that direction; an ordering by every step significant.
+  'direction only'  significant in the claimed direction, but the paper's figure lies outside that
+                    range (the reason says on which side and by how much); also when the reports
+                    came without per-run records, so that the range cannot be computed.
+  'contradicted'    the 95% interval lies entirely on the opposite side.
+  'not significant' the 95% interval contains no-effect. A level of its own rather than folded into
+                    another: with thousands of maps it means the effect is absent or negligible,
+                    which neither supports the claim ('direction only' would say it did) nor
+                    shows its opposite ('contradicted' would).
+  'not comparable'  the claim is marked "not_comparable" in claims.json with the reason (e.g. the
+                    paper's MATLAB wall seconds against our CPU nanoseconds: our figure is shown
+                    for context only), or nothing to measure: no report of the set-up, a planner
+                    or metric missing, no matching cells, fewer than min_pairs pairs.
+An ordering's level is its worst step's (not comparable, then contradicted, then not significant).
 
 Exit codes: 0 done (whatever the verdicts), 2 bad report / runs / claims file.
 """
@@ -50,7 +75,10 @@ from agvreport import Moments, ReportError, moments_from_summary  # noqa: E402
 DASH = "\u2013"
 # The per-run record format agvbench writes (engine/run_record.h kJournalVersion).
 JOURNAL_VERSION = 1
-HOLDS, FAILS, NA = "holds", "does not hold", "not comparable"
+REPRODUCED, DIRECTION, CONTRADICTED, NOT_SIGNIFICANT, NA = (
+    "reproduced", "direction only", "contradicted", "not significant", "not comparable")
+LEVELS = (REPRODUCED, DIRECTION, CONTRADICTED, NOT_SIGNIFICANT, NA)
+SETUPS = (("paper", "the paper's set-up"), ("random", "our random maps"))
 DEFAULT_CLAIMS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "claims.json")
 
 
@@ -70,6 +98,7 @@ class Source:
         self.doc = doc
         self.runs_path = None
         self.runs = None  # list of records
+        self.as_setup = None  # --all-as: stands for this set-up of every claim, whatever its name
         cfg = doc.get("config", {})
         self.name = cfg.get("name", os.path.basename(path)) if isinstance(cfg, dict) else os.path.basename(path)
         self.baseline = agvreport.baseline_label(doc)
@@ -156,6 +185,8 @@ def resolve(selector, src):
 def cell_matches(cell, filt):
     if not filt:
         return True
+    if isinstance(filt, list):  # a union of filters (paper 002: each size at its own density)
+        return any(cell_matches(cell, f) for f in filt)
     gens = filt.get("generators")
     if gens and cell["generator"] not in gens:
         return False
@@ -180,6 +211,8 @@ def cell_matches(cell, filt):
 def describe_filter(filt):
     if not filt:
         return "all cells"
+    if isinstance(filt, list):
+        return " or ".join(f"({describe_filter(f)})" for f in filt)
     parts = []
     if filt.get("generators"):
         parts.append("generator " + "/".join(filt["generators"]))
@@ -273,17 +306,19 @@ def cell_ratio_from_report(cell, cand, base, metric):
     return m, pairs, int(comp.get("wins") or 0), int(comp.get("ties") or 0), int(comp.get("losses") or 0), excluded
 
 
-def _run_value(rec, metric):
+def _run_value(rec, metric, offset=0.0):
     if rec.get("outcome") != "success":
         return None
     if metric == "plan_time_ns":
         v = (rec.get("timing") or {}).get("plan_time_ns")
     else:
         v = (rec.get("metrics") or {}).get(metric)
-    return float(v) if finite(v) else None
+    return float(v) + offset if finite(v) else None
 
 
-def cell_from_runs(src, cell, cand, base, metric, statistic, tol=1e-9):
+def cell_from_runs(src, cell, cand, base, metric, statistic, tol=1e-9, offset=0.0, values=None):
+    """Paired moments of one cell from the per-run records; each map's own ratio (or difference)
+    is appended to `values` when given (the per-map distribution the magnitude is graded on)."""
     maps = src.runs_of_cell(cell["cell"])
     m = Moments()
     pairs = wins = ties = losses = excluded = 0
@@ -291,7 +326,7 @@ def cell_from_runs(src, cell, cand, base, metric, statistic, tol=1e-9):
         recs = maps[idx]
         if cand not in recs or base not in recs:
             continue
-        c, b = _run_value(recs[cand], metric), _run_value(recs[base], metric)
+        c, b = _run_value(recs[cand], metric, offset), _run_value(recs[base], metric, offset)
         if c is None or b is None:
             continue
         pairs += 1
@@ -304,13 +339,31 @@ def cell_from_runs(src, cell, cand, base, metric, statistic, tol=1e-9):
             losses += 1
         if statistic == "difference":
             m.add(0.0 if tie else c - b)
+            if values is not None:
+                values.append(0.0 if tie else c - b)
         elif c > 0 and b > 0:
             m.add(math.log(c / b))
+            if values is not None:
+                values.append(c / b)
         elif c == 0 and b == 0:
             m.add(0.0)
+            if values is not None:
+                values.append(1.0)
         else:
             excluded += 1
     return m, pairs, wins, ties, losses, excluded
+
+
+def percentile(sorted_values, q):
+    """The q-quantile (0..1) by linear interpolation between order statistics (numpy's default)."""
+    n = len(sorted_values)
+    if n == 0:
+        return None
+    pos = q * (n - 1)
+    i = int(math.floor(pos))
+    if i + 1 >= n:
+        return sorted_values[-1]
+    return sorted_values[i] + (pos - i) * (sorted_values[i + 1] - sorted_values[i])
 
 
 def summary_moments(planner_cell, metric):
@@ -350,6 +403,9 @@ def measure(sources, comp, min_pairs):
     statistic = comp.get("statistic", "ratio")
     metrics = comp["metric"] if isinstance(comp["metric"], list) else [comp["metric"]]
     filt = comp.get("cells") or {}
+    offset = float(comp.get("offset", 0.0))
+    values = []  # per-map ratios (or differences), from the per-run records
+    values_missing = []  # sources without per-run records
     exact = {"acc": Acc(), "method": set()}
     indirect = {"c": Acc(), "b": Acc(), "via": set(), "cells": [], "sources": []}
     unpaired = {"c": Moments(), "b": Moments(), "cells": [], "sources": [], "maps": 0}
@@ -375,7 +431,12 @@ def measure(sources, comp, min_pairs):
             why.append(f"{src.name}: metric {' / '.join(metrics)} not in report")
             continue
         used_metric = used_metric or metric
-        paired_here = metric in paired_metrics_of(src)
+        paired_here = metric in paired_metrics_of(src) and offset == 0.0
+        if src.runs is not None:
+            for c in cells:
+                cell_from_runs(src, c, cand, base, metric, statistic, offset=offset, values=values)
+        else:
+            values_missing.append(src.name)
         maps_here = sum(int(c.get("maps") or 0) for c in cells)
         if statistic == "ratio" and paired_here and base == src.baseline and \
                 all(cell_ratio_from_report(c, cand, base, metric) for c in cells):
@@ -391,7 +452,7 @@ def measure(sources, comp, min_pairs):
         elif src.runs is not None:
             acc = exact["acc"]
             for c in cells:
-                m, pairs, w, t, l, ex = cell_from_runs(src, c, cand, base, metric, statistic)
+                m, pairs, w, t, l, ex = cell_from_runs(src, c, cand, base, metric, statistic, offset=offset)
                 acc.m.merge(m)
                 acc.pairs += pairs; acc.wins += w; acc.ties += t; acc.losses += l; acc.excluded += ex
                 acc.cells.append(c["cell"])
@@ -444,9 +505,12 @@ def measure(sources, comp, min_pairs):
                 why.append(f"{src.name}: the report pairs planners only against '{src.baseline}' "
                            f"(give the sweep's --runs-out JSONL after the report)")
 
+    values.sort()
     res = {"statistic": statistic, "metric": used_metric or metrics[0], "why": why,
            "estimate": None, "lo": None, "hi": None, "n": 0, "pairs": 0, "maps": 0, "cells": [],
-           "sources": [], "method": None, "wins": None, "ties": None, "losses": None}
+           "sources": [], "method": None, "wins": None, "ties": None, "losses": None,
+           "p5": percentile(values, 0.05), "p95": percentile(values, 0.95), "range_n": len(values),
+           "range_missing": values_missing}
     acc = exact["acc"]
     if acc.m.n > 0 or acc.pairs > 0:
         m = acc.m
@@ -490,9 +554,8 @@ def measure(sources, comp, min_pairs):
 
 
 def verdict(res, comp, paper_value):
-    """(verdict, reason) for one measured comparison."""
+    """(level, reason) for one measured comparison (the levels: module docstring)."""
     direction = comp.get("direction", "smaller")
-    check = comp.get("check", "magnitude" if paper_value is not None else "direction")
     statistic = res["statistic"]
     neutral = 1.0 if statistic == "ratio" else 0.0
     if res["estimate"] is None or res["n"] == 0:
@@ -505,25 +568,37 @@ def verdict(res, comp, paper_value):
     better_side = (hi < neutral) if direction == "smaller" else (lo > neutral)
     worse_side = (lo > neutral) if direction == "smaller" else (hi < neutral)
     claimed = "smaller" if direction == "smaller" else "larger"
+    if worse_side:
+        return CONTRADICTED, (f"the opposite: the candidate is significantly "
+                              f"{'larger' if direction == 'smaller' else 'smaller'}")
     if not better_side:
-        if worse_side:
-            return FAILS, f"the opposite: the candidate is significantly {'larger' if direction == 'smaller' else 'smaller'}"
-        return FAILS, f"no significant difference (the 95% interval contains {neutral:g})"
-    if check == "direction" or paper_value is None:
-        return HOLDS, f"significantly {claimed} (direction only)"
-    if direction == "smaller":
-        if paper_value < lo:
-            return FAILS, (f"the direction holds, but the paper's {show(paper_value, statistic)} is a larger "
-                           f"effect than our whole interval")
-        extra = " (our effect is larger than the paper's)" if paper_value > hi else ""
+        return NOT_SIGNIFICANT, f"no significant difference (the 95% interval contains {neutral:g})"
+    if paper_value is None:
+        return REPRODUCED, f"significantly {claimed}; the paper gives no figure: its claim is the direction"
+    p5, p95 = res.get("p5"), res.get("p95")
+    if p5 is None or p95 is None or res.get("range_missing"):
+        return DIRECTION, (f"significantly {claimed}; the paper's figure is not graded: no per-run "
+                           f"records for {', '.join(res.get('range_missing') or ['these reports'])}")
+    rng = f"our per-map 5-95% range {show_range(res)}"
+    if p5 - 1e-12 <= paper_value <= p95 + 1e-12:
+        return REPRODUCED, f"significantly {claimed}; the paper's {show(paper_value, statistic)} lies inside {rng}"
+    edge = p5 if paper_value < p5 else p95
+    side = "below" if paper_value < p5 else "above"
+    if statistic == "ratio":
+        by = (f"by {(max(edge, paper_value) / min(edge, paper_value) - 1) * 100:.1f}% of the ratio"
+              if paper_value > 0 and edge > 0 else f"by {abs(edge - paper_value):.3f}")
     else:
-        if paper_value > hi:
-            return FAILS, (f"the direction holds, but the paper's {show(paper_value, statistic)} is a larger "
-                           f"effect than our whole interval")
-        extra = " (our effect is larger than the paper's)" if paper_value < lo else ""
-    if extra:
-        return HOLDS, f"significantly {claimed}{extra}"
-    return HOLDS, f"significantly {claimed}; the paper's figure lies inside our interval"
+        by = f"by {abs(edge - paper_value):.3f}"
+    return DIRECTION, (f"significantly {claimed}, but the paper's {show(paper_value, statistic)} lies {side} "
+                       f"{rng}, {by} beyond its {'5%' if side == 'below' else '95%'} point")
+
+
+def show_range(res):
+    if res.get("p5") is None:
+        return DASH
+    if res["statistic"] == "ratio":
+        return f"[{res['p5']:.3f}, {res['p95']:.3f}]"
+    return f"[{res['p5']:+.3f}, {res['p95']:+.3f}]"
 
 
 def show(v, statistic):
@@ -588,47 +663,116 @@ def sel_text(sel):
     return t
 
 
+def check_claims_file(doc):
+    if not isinstance(doc, dict) or not isinstance(doc.get("claims"), list):
+        raise ReportError("expected an object with a 'claims' list")
+    ids = set()
+    for i, c in enumerate(doc["claims"]):
+        w = f"claims[{i}]"
+        for key in ("id", "paper", "where", "claim", "paper_figure", "compare", "setup"):
+            if key not in c:
+                raise ReportError(f"{w}: missing key '{key}'")
+        if c["id"] in ids:
+            raise ReportError(f"{w}: duplicate id '{c['id']}'")
+        ids.add(c["id"])
+        setup = c["setup"]
+        if not isinstance(setup, dict) or not all(isinstance(setup.get(k), str) for k, _ in SETUPS):
+            raise ReportError(f"{w}.setup: expected {{\"paper\": CONFIG NAME, \"random\": CONFIG NAME}}")
+        if "not_comparable" in c and not isinstance(c["not_comparable"], str):
+            raise ReportError(f"{w}.not_comparable: expected the reason as a string")
+        comp = c["compare"]
+        if comp.get("type") == "ordering":
+            if not isinstance(comp.get("planners"), list) or len(comp["planners"]) < 2:
+                raise ReportError(f"{w}.compare.planners: expected at least two planner selectors")
+            if comp.get("direction", "decreasing") not in ("decreasing", "increasing"):
+                raise ReportError(f"{w}.compare.direction: expected 'decreasing' or 'increasing'")
+        else:
+            for key in ("candidate", "baseline", "metric"):
+                if key not in comp:
+                    raise ReportError(f"{w}.compare: missing key '{key}'")
+            if comp.get("direction", "smaller") not in ("smaller", "larger"):
+                raise ReportError(f"{w}.compare.direction: expected 'smaller' or 'larger'")
+            if comp.get("statistic", "ratio") not in ("ratio", "difference"):
+                raise ReportError(f"{w}.compare.statistic: expected 'ratio' or 'difference'")
+            if "offset" in comp and not finite(comp["offset"]):
+                raise ReportError(f"{w}.compare.offset: expected a number")
+    return doc
+
+
+def sel_text(sel):
+    if isinstance(sel, str):
+        return sel
+    t = sel.get("label") or sel.get("name")
+    if sel.get("params"):
+        t += "(" + ", ".join(f"{k}={json.dumps(v)}" for k, v in sel["params"].items()) + ")"
+    return t
+
+
+def evaluate_setup(claim, comp, sources, min_pairs, setup_key):
+    """One claim against the reports of one set-up (config name claim.setup[setup_key])."""
+    config = claim["setup"][setup_key]
+    srcs = [s for s in sources if (s.as_setup == setup_key if s.as_setup else s.name == config)]
+    out = {"config": config}
+    cells = comp.get("paper_cells", comp.get("cells")) if setup_key == "paper" else comp.get("cells")
+    if not srcs:
+        out.update(verdict=NA, why=f"no report of the set-up '{config}' given", measured=DASH,
+                   range=DASH, pairs=0, maps=0, result=None)
+        return out
+    if comp.get("type") == "ordering":
+        sels = comp["planners"]
+        steps = []
+        for a, b in zip(sels, sels[1:]):
+            sub = {"candidate": b, "baseline": a, "metric": comp["metric"], "cells": cells,
+                   "direction": "smaller" if comp.get("direction", "decreasing") == "decreasing" else "larger",
+                   "statistic": "ratio"}
+            res = measure(srcs, sub, min_pairs)
+            v, why = verdict(res, sub, None)
+            steps.append({"step": f"{sel_text(b)} vs {sel_text(a)}", "verdict": v, "why": why, "result": res})
+        verdicts = [st["verdict"] for st in steps]
+        for level in (NA, CONTRADICTED, NOT_SIGNIFICANT):
+            if level in verdicts:
+                v = level
+                why = "; ".join(f"{st['step']}: {st['why']}" for st in steps if st["verdict"] == level)
+                break
+        else:
+            v, why = REPRODUCED, "every step significant in the claimed direction (the paper gives no per-step figure)"
+        out.update(verdict=v, why=why, steps=steps, result=None,
+                   measured="; ".join(f"{st['step']}: {show_interval(st['result'])}" for st in steps
+                                      if st["result"]["estimate"] is not None) or DASH,
+                   range="; ".join(f"{st['step']}: {show_range(st['result'])}" for st in steps
+                                   if st["result"].get("p5") is not None) or DASH,
+                   pairs=min((st["result"]["pairs"] for st in steps if st["result"]["pairs"]), default=0),
+                   maps=max((st["result"]["maps"] for st in steps), default=0))
+        return out
+    sub = dict(comp, cells=cells)
+    res = measure(srcs, sub, min_pairs)
+    v, why = verdict(res, sub, comp.get("paper_value"))
+    out.update(verdict=v, why=why, result=res, measured=show_interval(res), range=show_range(res),
+               pairs=res["pairs"], maps=res["maps"])
+    return out
+
+
 def evaluate(claim, sources, defaults):
     comp = claim["compare"]
     min_pairs = int(comp.get("min_pairs", claim.get("min_pairs", defaults.get("min_pairs", 30))))
     out = {"id": claim["id"], "paper": claim["paper"], "where": claim["where"], "claim": claim["claim"],
-           "paper_figure": claim["paper_figure"]}
+           "paper_figure": claim["paper_figure"], "paper_value": comp.get("paper_value"),
+           "measures": claim.get("measures", ""), "note": claim.get("note"),
+           "setup": claim["setup"]}
     if comp.get("type") == "ordering":
-        sels = comp["planners"]
-        if comp.get("direction", "decreasing") == "increasing":
-            pass
-        steps = []
-        for a, b in zip(sels, sels[1:]):
-            sub = {"candidate": b, "baseline": a, "metric": comp["metric"], "cells": comp.get("cells"),
-                   "direction": "smaller" if comp.get("direction", "decreasing") == "decreasing" else "larger",
-                   "statistic": "ratio", "check": "direction"}
-            res = measure(sources, sub, min_pairs)
-            v, why = verdict(res, sub, None)
-            steps.append({"step": f"{sel_text(b)} vs {sel_text(a)}", "verdict": v, "why": why, "result": res})
-        verdicts = [s["verdict"] for s in steps]
-        if FAILS in verdicts:
-            v = FAILS
-            why = "; ".join(f"{s['step']}: {s['why']}" for s in steps if s["verdict"] == FAILS)
-        elif NA in verdicts:
-            v = NA
-            why = "; ".join(f"{s['step']}: {s['why']}" for s in steps if s["verdict"] == NA)
-        else:
-            v, why = HOLDS, "every step significant in the claimed direction"
-        out.update(verdict=v, why=why, steps=steps,
-                   measured="; ".join(f"{s['step']}: {show_interval(s['result'])}" for s in steps
-                                      if s["result"]["estimate"] is not None) or "\u2013",
-                   pairs=min((s["result"]["pairs"] for s in steps if s["result"]["pairs"]), default=0),
-                   maps=max((s["result"]["maps"] for s in steps), default=0),
-                   comparison=f"{comp['metric']}: " + " > ".join(sel_text(s) for s in sels))
-        return out
-    paper_value = comp.get("paper_value")
-    res = measure(sources, comp, min_pairs)
-    v, why = verdict(res, comp, paper_value)
-    out.update(verdict=v, why=why, result=res, measured=show_interval(res), pairs=res["pairs"],
-               maps=res["maps"], paper_value=paper_value,
-               comparison=f"{res['metric']} {comp.get('statistic', 'ratio')}: {sel_text(comp['candidate'])} / "
-                          f"{sel_text(comp['baseline'])}" if comp.get("statistic", "ratio") == "ratio" else
-                          f"{res['metric']} difference: {sel_text(comp['candidate'])} - {sel_text(comp['baseline'])}")
+        out["comparison"] = f"{comp['metric']}: " + " > ".join(sel_text(s) for s in comp["planners"])
+    else:
+        metric = comp["metric"] if isinstance(comp["metric"], str) else " / ".join(comp["metric"])
+        if comp.get("offset"):
+            metric += f" {comp['offset']:+g}"
+        op = "/" if comp.get("statistic", "ratio") == "ratio" else "-"
+        out["comparison"] = (f"{metric} {comp.get('statistic', 'ratio')}: {sel_text(comp['candidate'])} {op} "
+                             f"{sel_text(comp['baseline'])}")
+    for key, _ in SETUPS:
+        r = evaluate_setup(claim, comp, sources, min_pairs, key)
+        if claim.get("not_comparable"):
+            r["verdict"], r["why"] = NA, claim["not_comparable"] + " (our figure shown for context)"
+        out[key + "_setup"] = r
     return out
 
 
@@ -650,61 +794,107 @@ def compact_cells(cells):
 
 def markdown(results, sources, claims_doc, claims_path):
     out = ["# The papers' headline claims against our sweeps", ""]
-    out.append(f"Generated by `reports/check_claims.py` from `{os.path.relpath(claims_path)}`. Reports:")
+    out.append(f"Generated by `reports/check_claims.py` from `{os.path.relpath(claims_path)}`. Each claim is "
+               "checked twice: on its paper's own set-up (`configs/paper-00N.json`: the paper's grid, cell "
+               "edge, obstacle shares, endpoint rule and collision model, each value with its `sources`) and "
+               "on our random-map protocol (`configs/paper-00N-random.json`: corner to corner on uniform "
+               "maps, except paper 002's blocks). Reports:")
     out.append("")
     for s in sources:
         cfg = s.doc.get("config", {})
         totals = s.doc.get("totals", {})
-        line = (f"- `{s.path}`: sweep `{s.name}`, seed {cfg.get('seed', '?')}, "
+        mp = cfg.get("map", {}) if isinstance(cfg.get("map"), dict) else {}
+        ends = mp.get("endpoints", "?")
+        if ends == "fixed":
+            ends += f" {mp.get('start')} -> {mp.get('goal')}"
+        elif ends == "random":
+            ends += f" (min_distance {mp.get('min_distance', 0):g})"
+        gens = ", ".join(g.get("name", "?") if isinstance(g, dict) else str(g) for g in cfg.get("generators", []))
+        line = (f"- `{s.path}`: sweep `{s.name}`, seed {cfg.get('seed', '?')}, {gens}, "
                 f"{cfg.get('maps_per_cell', '?')} maps per cell, {totals.get('cells', len(s.doc['cells']))} cells, "
+                f"cell edge {mp.get('cell_edge', 1):g} m, endpoints {ends}, "
                 f"planners {', '.join(p['label'] for p in s.planners)}; baseline `{s.baseline}`")
         if s.runs is not None:
             line += f"; per-run records `{s.runs_path}`"
         if s.doc.get("complete") is False:
             line += " **(incomplete sweep)**"
         out.append(line)
-    counts = {HOLDS: 0, FAILS: 0, NA: 0}
+    out += ["", f"Verdicts of the {len(results)} claims:", "",
+            "| level | " + " | ".join(title for _, title in SETUPS) + " |", "|---|---:|---:|"]
+    for level in LEVELS:
+        out.append(f"| {level} | " + " | ".join(str(sum(1 for r in results if r[k + '_setup']['verdict'] == level))
+                                                for k, _ in SETUPS) + " |")
+    out += ["", "Levels: **reproduced** = the claimed direction, significant (95% interval), and the paper's "
+            "figure inside our per-map 5-95% range of the same quantity (each map's candidate/baseline ratio or "
+            "difference, from the per-run records); **direction only** = the direction significant, the "
+            "paper's figure outside that range (by how much is given); **contradicted** = the opposite "
+            "direction, significant; **not significant** = the 95% interval contains no-effect; **not "
+            "comparable** = not measured the same way, or not measured (the reason is given). Measured: "
+            "candidate / baseline geometric-mean ratio over the maps where both succeeded, pooled over the "
+            "matching cells, with its 95% interval and % change (differences for clearance). Rules: "
+            "`reports/check_claims.py` docstring and `reports/README.md`.", ""]
+    head = "| claim | the paper says | measured quantity | paper's figure |"
+    rule = "|---|---|---|---|"
+    for _, title in SETUPS:
+        head += f" {title}: measured (95% CI); per-map 5-95% | verdict |"
+        rule += "---|---|"
+    out += [head, rule]
     for r in results:
-        counts[r["verdict"]] += 1
-    out += ["", f"**{counts[HOLDS]} hold, {counts[FAILS]} do not hold, {counts[NA]} not comparable** "
-            f"(of {len(results)} claims).", ""]
-    out.append("Measured: candidate / baseline geometric-mean ratio over the maps where both succeeded, "
-               "pooled over the matching cells, with its 95% interval and % change (differences for "
-               "clearance). Pairs = maps where both planners succeeded; maps = maps in the matching cells. "
-               "Verdict rules and pooling: see the docstring of `reports/check_claims.py` and `reports/README.md`.")
-    out += ["", "| claim | paper, where | the paper says | paper's figure | measured (95% CI) | pairs / maps | verdict |",
-            "|---|---|---|---|---|---|---|"]
-    for r in results:
-        verdict_text = f"**{r['verdict']}**"
-        if r["verdict"] != HOLDS:
-            verdict_text += f": {r['why']}"
-        out.append(f"| `{r['id']}` | {r['paper']}, {md(r['where'])} | {md(r['claim'])} | {md(r['paper_figure'])} | "
-                   f"{r['measured']} | {r['pairs']} / {r['maps']} | {md(verdict_text).replace(chr(92) + '*' + chr(92) + '*', '**')} |".replace("\n", " "))
+        row = (f"| `{r['id']}` ({r['paper']}, {md(r['where'])}) | {md(r['claim'])} | {md(r['comparison'])}"
+               + (f"; {md(r['measures'])}" if r.get("measures") else "") + f" | {md(r['paper_figure'])}"
+               + (f" **Note:** {md(r['note'])}" if r.get("note") else "") + " |")
+        for k, _ in SETUPS:
+            x = r[k + "_setup"]
+            row += f" `{x['config']}`: {x['measured']}; {x['range']} | **{x['verdict']}**: {md(x['why'])} |"
+        out.append(row.replace("\n", " "))
     out += ["", "## Details", ""]
     for r in results:
-        out.append(f"### `{r['id']}`: {r['verdict']}")
+        out.append(f"### `{r['id']}`: {r['paper_setup']['verdict']} on the paper's set-up, "
+                   f"{r['random_setup']['verdict']} on random maps")
         out.append("")
-        out.append(f"- comparison: {r['comparison']}")
-        if "steps" in r:
-            for s in r["steps"]:
-                res = s["result"]
-                out.append(f"- step {s['step']}: {show_interval(res)}, {res['pairs']} pairs, "
-                           f"{s['verdict']} ({s['why']}); method: {res['method'] or DASH}")
-        else:
-            res = r["result"]
-            out.append(f"- measured: {show_interval(res)} over {res['pairs']} pairs ({res['n']} used"
-                       + (f", {res.get('excluded', 0)} without a ratio" if res.get("excluded") else "")
-                       + f") from {res['maps']} maps")
-            if res["wins"] is not None:
-                out.append(f"- wins / ties / losses (candidate smaller = win): {res['wins']} / {res['ties']} / {res['losses']}")
-            out.append(f"- paper's figure: {md(r['paper_figure'])}"
-                       + (f"; as a {res['statistic']}: {show(r['paper_value'], res['statistic'])}" if r.get("paper_value") is not None else ""))
-            out.append(f"- method: {res['method'] or DASH}")
-            if res["cells"]:
-                out.append(f"- cells: {compact_cells(res['cells'])} ({', '.join(res['sources'])})")
-        out.append(f"- verdict: {r['verdict']}: {r['why']}")
+        out.append(f"- comparison: {md(r['comparison'])}")
+        if r.get("measures"):
+            out.append(f"- what the paper measured: {md(r['measures'])}")
+        out.append(f"- paper's figure: {md(r['paper_figure'])}"
+                   + (f" (as a number: {r['paper_value']:g})" if r.get("paper_value") is not None else ""))
+        if r.get("note"):
+            out.append(f"- note: {md(r['note'])}")
+        for k, title in SETUPS:
+            x = r[k + "_setup"]
+            out.append(f"- {title} (`{x['config']}`): **{x['verdict']}**: {md(x['why'])}")
+            if x.get("steps"):
+                for st in x["steps"]:
+                    res = st["result"]
+                    out.append(f"  - step {st['step']}: {show_interval(res)}, per-map 5-95% {show_range(res)}, "
+                               f"{res['pairs']} pairs, {st['verdict']}; method: {res['method'] or DASH}")
+            elif x.get("result") is not None and x["result"]["estimate"] is not None:
+                res = x["result"]
+                out.append(f"  - measured {show_interval(res)} over {res['pairs']} pairs ({res['n']} used"
+                           + (f", {res.get('excluded', 0)} without a ratio" if res.get("excluded") else "")
+                           + f") from {res['maps']} maps; per-map 5-95% {show_range(res)} over {res['range_n']} maps")
+                if res["wins"] is not None:
+                    out.append(f"  - wins / ties / losses (candidate smaller = win): {res['wins']} / {res['ties']} / {res['losses']}")
+                out.append(f"  - method: {res['method'] or DASH}; cells: {compact_cells(res['cells'])}")
         out.append("")
     return "\n".join(out).rstrip() + "\n"
+
+
+def result_json(r):
+    """A claim's results without the bulky internals (the --json output)."""
+    out = {k: v for k, v in r.items() if k not in SETUPS_KEYS}
+    for k in SETUPS_KEYS:
+        x = r[k]
+        res = x.get("result") or {}
+        out[k] = {"config": x["config"], "verdict": x["verdict"], "why": x["why"], "measured": x["measured"],
+                  "pairs": x["pairs"], "maps": x["maps"], "estimate": res.get("estimate"), "lo": res.get("lo"),
+                  "hi": res.get("hi"), "n": res.get("n"), "p5": res.get("p5"), "p95": res.get("p95"),
+                  "method": res.get("method"),
+                  "steps": [{"step": st["step"], "verdict": st["verdict"], "why": st["why"],
+                             "estimate": st["result"]["estimate"]} for st in x.get("steps", [])]}
+    return out
+
+
+SETUPS_KEYS = tuple(k + "_setup" for k, _ in SETUPS)
 
 
 def main(argv=None):
@@ -713,6 +903,9 @@ def main(argv=None):
     ap.add_argument("--claims", default=DEFAULT_CLAIMS, help="claims file (default: reports/claims.json)")
     ap.add_argument("--out", default=None, help="Markdown to write (default: print to stdout)")
     ap.add_argument("--json", default=None, help="also write the results as JSON here")
+    ap.add_argument("--all-as", choices=[k for k, _ in SETUPS], default=None,
+                    help="every report stands for this set-up of every claim, whatever its config name "
+                         "(a sample sweep)")
     args = ap.parse_args(argv)
     try:
         claims_doc = check_claims_file(agvreport.load_json(args.claims))
@@ -733,6 +926,8 @@ def main(argv=None):
         except ReportError as e:
             sys.stderr.write(f"check_claims.py: {path}: {e}\n")
             return agvreport.BAD_INPUT
+    for src in sources:
+        src.as_setup = args.all_as
     defaults = claims_doc.get("defaults", {})
     results = [evaluate(c, sources, defaults) for c in claims_doc["claims"]]
     text = markdown(results, sources, claims_doc, args.claims)
@@ -744,17 +939,12 @@ def main(argv=None):
         sys.stdout.write(text)
     if args.json:
         with open(args.json, "w", encoding="utf-8") as f:
-            json.dump([{k: v for k, v in r.items() if k not in ("result", "steps")} |
-                       {"estimate": r.get("result", {}).get("estimate"), "lo": r.get("result", {}).get("lo"),
-                        "hi": r.get("result", {}).get("hi"), "n": r.get("result", {}).get("n"),
-                        "method": r.get("result", {}).get("method"),
-                        "steps": [{"step": s["step"], "verdict": s["verdict"], "why": s["why"],
-                                   "estimate": s["result"]["estimate"]} for s in r.get("steps", [])]}
-                       for r in results], f, indent=1)
+            json.dump([result_json(r) for r in results], f, indent=1)
     width = max((len(r["id"]) for r in results), default=10)
     for r in results:
-        line = f"{r['id']:<{width}}  {r['verdict']:<15} {r['measured'] if r['verdict'] != NA else r['why']}"
-        print(line if args.out else line, file=sys.stderr if not args.out else sys.stdout)
+        line = (f"{r['id']:<{width}}  paper set-up: {r['paper_setup']['verdict']:<16} "
+                f"random maps: {r['random_setup']['verdict']}")
+        print(line, file=sys.stdout if args.out else sys.stderr)
     return 0
 
 

@@ -1,23 +1,26 @@
 #!/usr/bin/env bash
-# Regenerate reports/CLAIMS.md: run the paper sweeps (configs/paper-000.json, -002, -003, -004,
-# each that exists) with per-run records into reports/out/, then check every claim of
-# reports/claims.json against all of them. Builds nothing: give it the agvbench binary.
+# Regenerate reports/CLAIMS.md: run both set-ups of every paper with per-run records into
+# reports/out/ (the papers' own set-ups configs/paper-000.json, -002, -003, -004, -004-nodes, and
+# our random-map protocol configs/paper-000-random.json, -002-, -003-, -004-random), then grade
+# every claim of reports/claims.json on each set-up. Builds nothing: give it the agvbench binary.
 #
 #   reports/make_claims.sh [AGVBENCH_BINARY]          # default build/agvbench
 #   REUSE=1 reports/make_claims.sh                    # reuse reports/out/paper-*.json(l) if present
+#   THREADS=2 reports/make_claims.sh                  # passed to agvbench run --threads
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 bin=${1:-build/agvbench}
 inputs=()
-for p in 000 002 003 004; do
-  cfg=configs/paper-$p.json
+for name in paper-000 paper-002 paper-003 paper-004 paper-004-nodes \
+            paper-000-random paper-002-random paper-003-random paper-004-random; do
+  cfg=configs/$name.json
   if [ ! -f "$cfg" ]; then
-    echo "make_claims.sh: $cfg not found: paper $p's claims will read 'not comparable'" >&2
+    echo "make_claims.sh: $cfg not found: the claims of that set-up will read 'not comparable'" >&2
     continue
   fi
-  rep=reports/out/paper-$p.json
-  runs=reports/out/paper-$p.jsonl
+  rep=reports/out/$name.json
+  runs=reports/out/$name.jsonl
   if [ "${REUSE:-0}" = 1 ] && [ -f "$rep" ] && [ -f "$runs" ]; then
     echo "make_claims.sh: reusing $rep" >&2
   else
@@ -28,7 +31,7 @@ for p in 000 002 003 004; do
     # A fresh sweep: agvbench refuses to truncate a journal holding records, so the previous
     # one (this script's own output) is removed first.
     rm -f "$runs"
-    "$bin" run "$cfg" --out "$rep" --runs-out "$runs"
+    "$bin" run "$cfg" --out "$rep" --runs-out "$runs" --quiet ${THREADS:+--threads "$THREADS"}
   fi
   inputs+=("$rep" "$runs")
 done

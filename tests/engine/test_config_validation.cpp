@@ -100,7 +100,9 @@ TEST(ConfigValidation, SweepTooLargeForMemoryIsRefused) {
   EXPECT_EQ(scoped_size.scheduled_runs,
             static_cast<double>(scheduled_runs(scoped_config, plan_sweep(scoped_config))));
   // The shipped configs fit.
-  for (const char* name : {"default", "quick", "paper-000", "paper-002", "paper-003", "paper-004"})
+  for (const char* name :
+       {"default", "quick", "paper-000", "paper-002", "paper-003", "paper-004", "paper-004-nodes",
+        "paper-000-random", "paper-002-random", "paper-003-random", "paper-004-random"})
     EXPECT_NO_THROW(load_config(std::string(AGV_SOURCE_DIR) + "/configs/" + name + ".json"))
         << name;
 }

@@ -5,6 +5,7 @@
 
 #include "algos/registry.h"
 #include "engine/commands.h"
+#include "engine/plugins.h"
 #include "generators/registry.h"
 
 namespace agv {
@@ -26,18 +27,37 @@ void print_params(const std::vector<ParamSpec>& params) {
   }
 }
 
+// "NAME VERSION (PATH, sha256 HASH)" of a loaded plugin.
+std::string plugin_line(const std::string& name) {
+  for (const auto& p : loaded_plugins())
+    if (p.name == name)
+      return p.name + " " + p.version + " (" + p.path + ", sha256 " + p.sha256 + ")";
+  return name;
+}
+
 }  // namespace
 
 int command_list(bool as_json) {
   if (as_json) {
-    const nlohmann::json doc = {{"planners", registry_json()},
-                                {"generators", generator_registry_json()}};
+    nlohmann::json doc = {{"planners", registry_json()}, {"generators", generator_registry_json()}};
+    // Only when plugins are loaded (--plugin), so the plain listing keeps its shape.
+    if (const auto plugins = loaded_plugins(); !plugins.empty()) {
+      doc["plugins"] = nlohmann::json::array();
+      for (const auto& p : plugins) {
+        nlohmann::json entry = p.as_run();
+        entry["compiler"] = p.compiler;
+        entry["planners"] = p.planners;
+        doc["plugins"].push_back(std::move(entry));
+      }
+    }
     std::cout << doc.dump(2) << "\n";
     return 0;
   }
   std::cout << "planners:\n\n";
-  for (const auto& info : planner_registry()) {
+  for (const auto* planner : all_planners()) {
+    const PlannerInfo& info = *planner;
     std::cout << info.name << "  -  " << info.summary << "\n    source: " << info.source;
+    if (!info.plugin.empty()) std::cout << "\n    plugin: " << plugin_line(info.plugin);
     for (const auto& [name, meaning] : info.counters)
       std::cout << "\n    " << name << ": " << meaning;
     std::cout << (info.stochastic ? "\n    stochastic: draws from the run's RNG" : "") << "\n";

@@ -7,6 +7,7 @@
 #include "engine/cli_numbers.h"
 #include "engine/commands.h"
 #include "engine/isolated_worker.h"
+#include "engine/plugins.h"
 
 namespace {
 
@@ -120,6 +121,11 @@ int main(int argc, char** argv) {
       ->transform(number_in(kToleranceRange));
   scen_cmd->add_flag("--json", scen.json, "print the summary as JSON");
 
+  // Planner plugins (engine/plugins.h), loaded before the command runs.
+  std::vector<std::string> plugins;
+  for (auto* cmd : {run_cmd, merge_cmd, validate_cmd, list_cmd, plan_cmd, scen_cmd})
+    cmd->add_option("--plugin", plugins, "planner plugin (shared library) to load (repeatable)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -128,6 +134,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    for (const auto& path : plugins) agv::load_plugin(path, "--plugin");
     if (*run_cmd) return agv::command_run(run);
     if (*merge_cmd) return agv::command_merge(merge_config, merge_journals, merge_out);
     if (*worker_cmd) return agv::worker_main(worker_memory);

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -388,11 +389,31 @@ std::vector<PlannerEntry> parse_planners(ObjectReader& r, const SweepConfig& swe
   return planners;
 }
 
+// "plugins": shared-library paths (relative ones from the config's folder) or, in a config as
+// run, the records of engine/plugins.h, which must still match the file. Loaded before the
+// planners are read, so a plugin's planners can be named.
+void load_config_plugins(const json& list, const std::string& base_dir) {
+  if (!list.is_array()) throw InputError("plugins: expected a list of plugin paths");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string where = "plugins[" + std::to_string(i) + "]";
+    if (!list[i].is_string()) {
+      load_recorded_plugin(list[i], where);
+      continue;
+    }
+    std::filesystem::path path = list[i].get<std::string>();
+    if (path.empty()) throw InputError(where + ": empty path");
+    if (path.is_relative() && !base_dir.empty()) path = std::filesystem::path(base_dir) / path;
+    load_plugin(path.string(), where);
+  }
+}
+
 }  // namespace
 
-SweepConfig parse_config(const json& j) {
+SweepConfig parse_config(const json& j, const std::string& base_dir) {
   SweepConfig c;
   ObjectReader r(j, "");
+  if (r.has("plugins")) load_config_plugins(r.raw("plugins"), base_dir);
+  c.plugins = loaded_plugins();
   c.name = r.string("name", c.name);
   c.seed = static_cast<std::uint64_t>(r.integer("seed", 1, kSeedRange));
   if (r.has("generators")) c.generators = parse_generators(r);
@@ -516,7 +537,7 @@ SweepConfig load_config(const std::string& path) {
   const std::string text = read_text_file(path, "config file", std::uintmax_t{64} << 20);
   const json j = parse_without_duplicate_keys(text, path);
   try {
-    return parse_config(j);
+    return parse_config(j, std::filesystem::path(path).parent_path().string());
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
   }
@@ -530,9 +551,8 @@ json sizes_json(const std::vector<GridSize>& sizes) {
   return out;
 }
 
-}  // namespace
-
-json config_as_run(const SweepConfig& c) {
+// The config as run, but for its plugins.
+json config_without_plugins(const SweepConfig& c) {
   json planners = json::array();
   for (const auto& p : c.planners) {
     json entry = {{"label", p.label}, {"name", p.name}, {"params", p.resolved}};
@@ -576,6 +596,19 @@ json config_as_run(const SweepConfig& c) {
            {{"line_speed_mps", c.motion.line_speed_mps},
             {"node_time_s", c.motion.node_time_s},
             {"turn_speed_radps", c.motion.turn_speed_radps}}}};
+}
+
+}  // namespace
+
+json config_as_run(const SweepConfig& c) {
+  json out = config_without_plugins(c);
+  // Written only when plugins run, so configs without them keep their hash (and journals).
+  if (!c.plugins.empty()) {
+    json plugins = json::array();
+    for (const auto& p : c.plugins) plugins.push_back(p.as_run());
+    out["plugins"] = std::move(plugins);
+  }
+  return out;
 }
 
 std::string config_hash(const SweepConfig& c) {

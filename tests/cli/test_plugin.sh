@@ -198,11 +198,39 @@ bad_plugin(unresolved ${ok_build} UNRESOLVED PLUGIN_NAME="unresolved" PLANNER_NA
 bad_plugin(builtin_clash ${ok_build} PLUGIN_NAME="builtin_clash" PLANNER_NAME="astar")
 bad_plugin(plugin_clash ${ok_build} PLUGIN_NAME="plugin_clash" PLANNER_NAME="gbfs")
 bad_plugin(name_clash ${ok_build} PLUGIN_NAME="gbfs_plugin" PLANNER_NAME="other_gbfs")
+# A program of one's own on the installed static libraries (no plugin): the imported targets
+# carry their dependencies.
+add_executable(consumer consumer.cpp)
+target_link_libraries(consumer PRIVATE agvbench::engine)
 EOF_CM
+cat >bad/consumer.cpp <<'EOF_CPP'
+#include <cstdio>
+#include "agvbench/algos/planner.h"
+#include "agvbench/algos/registry.h"
+#include "agvbench/engine/sweep_config.h"
+int main() {
+  agv::Grid grid(9, 9);
+  for (int y = 0; y < 8; ++y) grid.set_blocked(4, y, true);
+  agv::ConfiguredPlanner astar = agv::configure_planner("astar", nlohmann::json::object(), "astar");
+  agv::Rng rng(1, 2);
+  agv::Scratch scratch;
+  const agv::PlanResult r = agv::plan_checked(*astar.planner, {grid, {0, 0}, {8, 0}, rng, scratch});
+  const agv::SweepConfig config = agv::parse_config({{"planners", {"astar"}}, {"maps_per_cell", 2}});
+  std::printf("%s %zu %lld %s\n", agv::to_string(r.failure), r.path.size(),
+              static_cast<long long>(*r.work.collision_checks), agv::config_hash(config).c_str());
+}
+EOF_CPP
 "$cmake" -S bad -B bad-build "${tools[@]}" -DCMAKE_PREFIX_PATH="$prefix" >bad.log 2>&1 &&
   "$cmake" --build bad-build >>bad.log 2>&1 && ok "broken test plugins built" ||
   { tail -30 bad.log; bad "broken test plugins build"; }
 b=$work/bad-build
+# The wall at x = 4 is open at y = 8 only: the path goes round it, more than the 9 cells of the
+# straight line, and the engine's counter has its checks.
+"$b/consumer" >consumer.txt 2>&1 && $py - consumer.txt <<'EOF_PY' && ok "a program linked against agvbench::engine plans ($(cat consumer.txt))" || bad "consumer: $(cat consumer.txt)"
+import sys
+outcome, cells, checks, config_hash = open(sys.argv[1]).read().split()
+assert outcome == "none" and int(cells) > 9 and int(checks) > 0 and len(config_hash) == 16
+EOF_PY
 "$bin" list --plugin "$b/libgood_astar2.so" --json | grep -q '"astar2"' &&
   ok "a second well-formed plugin (astar under another name) loads" || bad "good_astar2"
 echo "not a library" >notlib.so

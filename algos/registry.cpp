@@ -113,8 +113,41 @@ std::deque<PlannerInfo>& test_planners() {
 
 void add_planner_for_testing(PlannerInfo info) { test_planners().push_back(std::move(info)); }
 
+namespace {
+// The plugins' planners (engine/plugins.h), added before any sweep starts; a deque keeps the
+// returned pointers stable.
+std::deque<PlannerInfo>& plugin_planners() {
+  static std::deque<PlannerInfo> planners;
+  return planners;
+}
+}  // namespace
+
+void add_plugin_planner(PlannerInfo info) {
+  const std::string who = "plugin \"" + info.plugin + "\": planner \"" + info.name + "\"";
+  for (const auto& other : planner_registry())
+    if (other.name == info.name) throw InputError(who + " clashes with the built-in planner");
+  for (const auto& other : plugin_planners())
+    if (other.name == info.name)
+      throw InputError(who + " clashes with plugin \"" + other.plugin + "\"'s planner");
+  for (const auto& other : test_planners())
+    if (other.name == info.name) throw InputError(who + " clashes with a test planner");
+  std::vector<PlannerInfo> one;
+  one.push_back(std::move(info));
+  follow_default_model(one);
+  plugin_planners().push_back(std::move(one.front()));
+}
+
+std::vector<const PlannerInfo*> all_planners() {
+  std::vector<const PlannerInfo*> out;
+  for (const auto& info : planner_registry()) out.push_back(&info);
+  for (const auto& info : plugin_planners()) out.push_back(&info);
+  return out;
+}
+
 const PlannerInfo* find_planner(std::string_view name) {
   for (const auto& info : planner_registry())
+    if (info.name == name) return &info;
+  for (const auto& info : plugin_planners())
     if (info.name == name) return &info;
   for (const auto& info : test_planners())
     if (info.name == name) return &info;
@@ -188,7 +221,7 @@ ConfiguredPlanner configure_planner(const std::string& name, const nlohmann::jso
   const PlannerInfo* info = find_planner(name);
   if (info == nullptr) {
     std::string known;
-    for (const auto& p : planner_registry()) known += (known.empty() ? "" : ", ") + p.name;
+    for (const auto* p : all_planners()) known += (known.empty() ? "" : ", ") + p->name;
     throw InputError(where + ": unknown planner \"" + name + "\" (known: " + known + ")");
   }
   ConfiguredPlanner c;
@@ -201,7 +234,8 @@ ConfiguredPlanner configure_planner(const std::string& name, const nlohmann::jso
 
 nlohmann::json registry_json() {
   nlohmann::json out = nlohmann::json::array();
-  for (const auto& info : planner_registry()) {
+  for (const auto* planner : all_planners()) {
+    const PlannerInfo& info = *planner;
     nlohmann::json p = nlohmann::json::array();
     for (const auto& s : info.params) p.push_back(s.to_json());
     nlohmann::json counters = nlohmann::json::object();
@@ -214,6 +248,7 @@ nlohmann::json registry_json() {
                    {"stochastic", info.stochastic},
                    {"proves_no_path", info.proves_no_path},
                    {"params", p}});
+    if (!info.plugin.empty()) out.back()["plugin"] = info.plugin;
   }
   return out;
 }

@@ -40,6 +40,8 @@ struct PlannerInfo {
   std::vector<ParamSpec> params;
   // Builds a planner from a validated parameter set.
   std::unique_ptr<Planner> (*make)(const Params& params) = nullptr;
+  // Empty for a built-in planner; else the name of the plugin it came from (algos/plugin.h).
+  std::string plugin;
 };
 
 const std::vector<PlannerInfo>& planner_registry();
@@ -48,6 +50,13 @@ std::vector<std::string> planner_names(std::span<const PlannerInfo> planners, Pl
 // For test binaries only, before any sweep starts: makes a planner findable by name without
 // putting it in the real registry (the isolation tests' deliberately faulty planners).
 void add_planner_for_testing(PlannerInfo info);
+
+// Before any sweep starts: makes a plugin's planner (info.plugin set) findable by name after the
+// built-in ones. Throws InputError naming the plugin when the name is taken, by a built-in planner
+// or another plugin's. Its collision-model parameters follow the default model as built-in ones do.
+void add_plugin_planner(PlannerInfo info);
+// Every planner `list` shows: the built-in table, then the plugins' planners in load order.
+std::vector<const PlannerInfo*> all_planners();
 
 // nullptr when unknown.
 const PlannerInfo* find_planner(std::string_view name);

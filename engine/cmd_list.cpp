@@ -8,6 +8,7 @@
 #include "algos/registry.h"
 #include "core/input_error.h"
 #include "engine/commands.h"
+#include "engine/plugins.h"
 #include "generators/registry.h"
 
 namespace agv {
@@ -27,6 +28,14 @@ void print_params(const std::vector<ParamSpec>& params) {
     }
     std::cout << "\n        " << p.doc << "\n";
   }
+}
+
+// "NAME VERSION (PATH, sha256 HASH)" of a loaded plugin.
+std::string plugin_line(const std::string& name) {
+  for (const auto& p : loaded_plugins())
+    if (p.name == name)
+      return p.name + " " + p.version + " (" + p.path + ", sha256 " + p.sha256 + ")";
+  return name;
 }
 
 }  // namespace
@@ -73,27 +82,39 @@ int command_list(bool as_json) {
 int command_list(const ListOptions& options) {
   const Selection only = select(options.names);
   if (options.json) {
-    const nlohmann::json doc = {{"planners", selected(registry_json(), only)},
-                                {"generators", selected(generator_registry_json(), only)}};
+    nlohmann::json doc = {{"planners", selected(registry_json(), only)},
+                          {"generators", selected(generator_registry_json(), only)}};
+    // Only when plugins are loaded (--plugin), so the plain listing keeps its shape.
+    if (const auto plugins = loaded_plugins(); !plugins.empty()) {
+      doc["plugins"] = nlohmann::json::array();
+      for (const auto& p : plugins) {
+        nlohmann::json entry = p.as_run();
+        entry["compiler"] = p.compiler;
+        entry["planners"] = p.planners;
+        doc["plugins"].push_back(std::move(entry));
+      }
+    }
     std::cout << doc.dump(2) << "\n";
     return 0;
   }
   if (options.brief) {
-    for (const auto& info : planner_registry())
-      if (only.has(info.name))
-        std::printf("planner    %-24s %-12s %s\n", info.name.c_str(), to_string(info.kind),
-                    info.summary.c_str());
+    for (const auto* info : all_planners())
+      if (only.has(info->name))
+        std::printf("planner    %-24s %-12s %s\n", info->name.c_str(), to_string(info->kind),
+                    info->summary.c_str());
     for (const auto& info : generator_registry())
       if (only.has(info.name))
         std::printf("generator  %-24s %-12s %s\n", info.name.c_str(), "", info.summary.c_str());
     return 0;
   }
   bool any_planner = false;
-  for (const auto& info : planner_registry()) any_planner = any_planner || only.has(info.name);
+  for (const auto* info : all_planners()) any_planner = any_planner || only.has(info->name);
   if (any_planner) std::cout << "planners:\n\n";
-  for (const auto& info : planner_registry()) {
+  for (const auto* planner : all_planners()) {
+    const PlannerInfo& info = *planner;
     if (!only.has(info.name)) continue;
     std::cout << info.name << "  -  " << info.summary << "\n    source: " << info.source;
+    if (!info.plugin.empty()) std::cout << "\n    plugin: " << plugin_line(info.plugin);
     for (const auto& [name, meaning] : info.counters)
       std::cout << "\n    " << name << ": " << meaning;
     std::cout << (info.stochastic ? "\n    stochastic: draws from the run's RNG" : "") << "\n";

@@ -8,6 +8,7 @@
 #include "engine/commands.h"
 #include "engine/environment.h"
 #include "engine/isolated_worker.h"
+#include "engine/plugins.h"
 
 namespace {
 
@@ -154,6 +155,11 @@ int main(int argc, char** argv) {
       ->transform(number_in(kToleranceRange));
   scen_cmd->add_flag("--json", scen.json, "print the summary as JSON");
 
+  // Planner plugins (engine/plugins.h), loaded before the command runs.
+  std::vector<std::string> plugins;
+  for (auto* cmd : {run_cmd, merge_cmd, validate_cmd, list_cmd, plan_cmd, scen_cmd})
+    cmd->add_option("--plugin", plugins, "planner plugin (shared library) to load (repeatable)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -162,6 +168,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    for (const auto& path : plugins) agv::load_plugin(path, "--plugin");
     if (*run_cmd) return agv::command_run(run);
     if (*merge_cmd) return agv::command_merge(merge_config, merge_journals, merge_out);
     if (*worker_cmd) return agv::worker_main(worker_memory);

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -424,11 +425,31 @@ json parse_sources(const json& j, const std::string& where) {
   return j;
 }
 
+// "plugins": shared-library paths (relative ones from the config's folder) or, in a config as
+// run, the records of engine/plugins.h, which must still match the file. Loaded before the
+// planners are read, so a plugin's planners can be named.
+void load_config_plugins(const json& list, const std::string& base_dir) {
+  if (!list.is_array()) throw InputError("plugins: expected a list of plugin paths");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string where = "plugins[" + std::to_string(i) + "]";
+    if (!list[i].is_string()) {
+      load_recorded_plugin(list[i], where);
+      continue;
+    }
+    std::filesystem::path path = list[i].get<std::string>();
+    if (path.empty()) throw InputError(where + ": empty path");
+    if (path.is_relative() && !base_dir.empty()) path = std::filesystem::path(base_dir) / path;
+    load_plugin(path.string(), where);
+  }
+}
+
 }  // namespace
 
-SweepConfig parse_config(const json& j) {
+SweepConfig parse_config(const json& j, const std::string& base_dir) {
   SweepConfig c;
   ObjectReader r(j, "");
+  if (r.has("plugins")) load_config_plugins(r.raw("plugins"), base_dir);
+  c.plugins = loaded_plugins();
   c.name = r.string("name", c.name);
   c.seed = static_cast<std::uint64_t>(r.integer("seed", 1, kSeedRange));
   if (r.has("generators")) c.generators = parse_generators(r);
@@ -553,7 +574,7 @@ SweepConfig load_config(const std::string& path) {
   const std::string text = read_text_file(path, "config file", std::uintmax_t{64} << 20);
   const json j = parse_without_duplicate_keys(text, path);
   try {
-    return parse_config(j);
+    return parse_config(j, std::filesystem::path(path).parent_path().string());
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
   }
@@ -573,6 +594,7 @@ json sizes_json(const std::vector<GridSize>& sizes) {
   return out;
 }
 
+// The config as run, but for the fields only some configs have (below).
 json config_fields(const SweepConfig& c) {
   json planners = json::array();
   for (const auto& p : c.planners) {
@@ -622,7 +644,8 @@ json config_fields(const SweepConfig& c) {
 }  // namespace
 
 // The fields above, plus what only some configs have, written only when present so that the
-// other configs keep their hash: fixed endpoints' cells and the "sources" commentary.
+// other configs keep their hash (and journals): fixed endpoints' cells, the "sources" commentary
+// and the plugins that ran.
 json config_as_run(const SweepConfig& c) {
   json out = config_fields(c);
   if (c.map.endpoints == EndpointMode::fixed) {
@@ -630,6 +653,11 @@ json config_as_run(const SweepConfig& c) {
     out["map"]["goal"] = {c.map.goal.x, c.map.goal.y};
   }
   if (!c.sources.empty()) out["sources"] = c.sources;
+  if (!c.plugins.empty()) {
+    json plugins = json::array();
+    for (const auto& p : c.plugins) plugins.push_back(p.as_run());
+    out["plugins"] = std::move(plugins);
+  }
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include "algos/registry.h"
 #include "core/collision_model.h"
 #include "engine/metrics.h"
+#include "engine/plugins.h"
 #include "generators/map_generators.h"
 #include "generators/registry.h"
 
@@ -91,14 +92,19 @@ struct SweepConfig {
   // "sources": free text saying where each value comes from (a paper's section or table);
   // echoed in the report's config, not part of the config hash. Empty = none given.
   nlohmann::json sources = nlohmann::json::object();
+  // Every plugin loaded in this process when the config was parsed (from "plugins" or the
+  // command line's --plugin), sorted by name: the config as run records each one's identity, path
+  // and content hash, so the config hash, a resume and an isolated worker know the code that ran.
+  std::vector<PluginRecord> plugins;
   // Execution settings: they change how a sweep runs, never what it reports.
   int threads = 0;  // 0 = all hardware threads
   std::string report_path = "reports/out/report.json";
   std::string runs_path;  // JSON Lines of per-run records; empty = none
 };
 
-// Throws InputError naming the field.
-SweepConfig parse_config(const nlohmann::json& j);
+// Throws InputError naming the field. Loads the config's "plugins" first (engine/plugins.h),
+// relative paths from `base_dir` (the config file's folder; empty: the working directory).
+SweepConfig parse_config(const nlohmann::json& j, const std::string& base_dir = "");
 // Reads and parses; malformed JSON -> InputError with the file, line and column.
 SweepConfig load_config(const std::string& path);
 

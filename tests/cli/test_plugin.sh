@@ -1,0 +1,270 @@
+#!/usr/bin/env bash
+# Issue 17 parts 1-2: agvbench installed into a fresh prefix, the example plugin
+# (examples/plugin_planner) configured and built against that prefix ONLY (a copy of its sources,
+# so nothing can reach into the source or build tree), listed, and swept next to astar: every
+# path valid, gbfs never shorter than the optimal astar on the same map, its collision checks
+# counted by the engine, 1 and 2 threads and --isolate identical in every non-timing field, the
+# config's "plugins" and --plugin the same sweep, a resume refused once the plugin file changed.
+# Then the broken plugins, each built here: another agvbench version, another plugin ABI, no
+# entry point, an unresolved symbol, a planner name of a built-in planner, a second plugin's
+# planner or plugin name, and a file that is no library: each exit 2 with a message naming it.
+# Usage: test_plugin.sh CMAKE BUILD_DIR SOURCE_DIR
+set -u
+cmake=$1
+build=$2
+src=$3
+same=$src/slurm/same_report.py
+source "$(dirname "$0")/lib.sh"
+isolate=(--isolate ${AGV_ISOLATE_MEMORY_MB:+--isolate-memory "$AGV_ISOLATE_MEMORY_MB"})
+# The plugins are built with agvbench's own compiler (the loader insists on the same toolchain),
+# through its compiler launcher (ccache) when it has one.
+cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt"; }
+tools=(-DCMAKE_CXX_COMPILER="$(cache_value CMAKE_CXX_COMPILER)")
+launcher=$(cache_value CMAKE_CXX_COMPILER_LAUNCHER)
+[ -n "$launcher" ] && tools+=(-DCMAKE_CXX_COMPILER_LAUNCHER="$launcher")
+command -v ninja >/dev/null && tools+=(-G Ninja)
+
+prefix=$work/prefix
+"$cmake" --install "$build" --prefix "$prefix" >install.log 2>&1 || {
+  cat install.log
+  bad "cmake --install"
+  finish test_plugin
+  exit 1
+}
+bin=$prefix/bin/agvbench
+[ -x "$bin" ] && [ -f "$prefix/include/agvbench/algos/plugin.h" ] &&
+  [ -f "$prefix/include/agvbench/core/version.h" ] &&
+  [ -f "$prefix/lib/cmake/agvbench/agvbenchConfig.cmake" ] && ok "installed: program, headers, package" ||
+  bad "install layout"
+
+# The example, copied out of the checkout, configured with the prefix alone.
+cp -r "$src/examples/plugin_planner" example
+if "$cmake" -S example -B example-build "${tools[@]}" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF >configure.log 2>&1 &&
+  "$cmake" --build example-build >build.log 2>&1; then
+  ok "example plugin configured and built against the install prefix"
+else
+  cat configure.log build.log | tail -30
+  bad "example plugin build"
+  finish test_plugin
+  exit 1
+fi
+plugin=$(realpath example-build/libgbfs_plugin.so)
+grep -q "agvbench_DIR:PATH=$prefix/lib/cmake/agvbench" example-build/CMakeCache.txt &&
+  ok "find_package(agvbench) found the prefix" || bad "agvbench_DIR is not the prefix's"
+# Neither the checkout nor its build tree, nor agvbench's own flags, reach the plugin's build.
+flags=$(cat example-build/build.ninja example-build/CMakeFiles/*.dir/flags.make 2>/dev/null)
+if grep -qF -- "$src/" <<<"$flags" || grep -qF -- "$build" <<<"$flags"; then
+  bad "the example's build names the source or build tree"
+else
+  ok "the example's build names neither the source nor the build tree"
+fi
+grep -qE -- "-march=native|-Wconversion|-Wshadow" <<<"$flags" &&
+  bad "agvbench's tuning or warnings leaked into the consumer" ||
+  ok "no -march=native or agvbench warnings imposed on the consumer"
+
+# list, text and JSON.
+"$bin" list --plugin "$plugin" >list.txt 2>&1 && grep -q "^gbfs  -  greedy best-first" list.txt &&
+  grep -q "plugin: gbfs_plugin 1.0.0" list.txt && ok "list --plugin shows gbfs and its plugin" ||
+  bad "list --plugin: $(head -5 list.txt)"
+"$bin" list --plugin "$plugin" --json >list.json 2>&1 && $py - list.json <<'EOF_PY' &&
+import json, sys
+doc = json.load(open(sys.argv[1]))
+g = [p for p in doc["planners"] if p["name"] == "gbfs"]
+assert len(g) == 1 and g[0]["plugin"] == "gbfs_plugin", g
+names = {p["name"] for p in g[0]["params"]}
+assert names == {"corner_rule", "heuristic", "check_every"}, names
+(pl,) = doc["plugins"]
+assert pl["name"] == "gbfs_plugin" and len(pl["sha256"]) == 64 and pl["planners"] == ["gbfs"], pl
+assert any(p["name"] == "astar" and "plugin" not in p for p in doc["planners"])
+EOF_PY
+  ok "list --json: gbfs with its parameters and plugin record" || bad "list --json"
+"$bin" list --json >plain.json && ! grep -q gbfs plain.json && ! grep -q '"plugins"' plain.json &&
+  ok "list without --plugin: no plugin planner" || bad "list without --plugin shows plugins"
+
+# plan and validate take --plugin.
+"$bin" plan --plugin "$plugin" --planner gbfs --planner astar --size 24 --density 0.25 --seed 3 \
+  --json --no-ascii >plan.json 2>plan.err && ok "plan --plugin --planner gbfs" ||
+  bad "plan --plugin: $(cat plan.err)"
+
+# The sweep: the config names the plugin by a path relative to its own folder.
+mkdir -p sweep
+cat >sweep/config.json <<'JSON'
+{"name": "plugin-test", "seed": 17, "generators": ["uniform", "blocks"], "sizes": [40],
+ "densities": [0.15, 0.3], "maps_per_cell": 12, "collision": {"corner_rule": "no_squeeze"},
+ "plugins": ["../example-build/libgbfs_plugin.so"],
+ "planners": ["astar", "gbfs",
+              {"name": "gbfs", "label": "gbfs_manhattan", "params": {"heuristic": "manhattan"}}],
+ "report": "unused.json"}
+JSON
+sed 's|"plugins": \[[^]]*\],||' sweep/config.json >sweep/no_plugins.json
+runs=$((2 * 2 * 12 * 3))
+"$bin" validate sweep/config.json >validate.txt 2>&1 && ok "validate with \"plugins\"" ||
+  bad "validate: $(cat validate.txt)"
+"$bin" validate sweep/no_plugins.json >/dev/null 2>validate2.txt
+[ $? -eq 2 ] && grep -q 'unknown planner "gbfs"' validate2.txt &&
+  ok "without the plugin, gbfs is an unknown planner (exit 2)" || bad "validate without plugin"
+"$bin" validate sweep/no_plugins.json --plugin "$plugin" >/dev/null 2>&1 &&
+  ok "validate --plugin" || bad "validate --plugin"
+
+"$bin" run sweep/config.json --threads 1 --out t1.json --runs-out t1.jsonl --quiet &&
+  "$bin" run sweep/config.json --threads 2 --out t2.json --quiet &&
+  "$bin" run sweep/config.json --threads 2 "${isolate[@]}" --out iso.json --quiet &&
+  "$bin" run sweep/no_plugins.json --plugin "$plugin" --threads 2 --out cli.json --quiet ||
+  bad "a plugin sweep failed"
+$py - t1.jsonl "$runs" "$plugin" t1.json <<'EOF_PY' && ok "every path valid; gbfs >= astar on every map; its checks counted; the report names the plugin" || bad "sweep records"
+import collections, hashlib, json, sys
+records = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
+assert len(records) == int(sys.argv[2]), len(records)
+bad = [(r["planner"], r["outcome"]) for r in records if r["outcome"] != "success"]
+assert not bad, bad[:5]
+length = collections.defaultdict(dict)
+for r in records:
+    length[(r["cell"], r["map_index"])][r["planner"]] = r["metrics"]["path_length"]
+    if r["planner_name"] == "gbfs":
+        assert r["metrics"]["collision_checks"] > 0, r["metrics"]
+        assert r["metrics"]["search_expansions"] > 0, r["metrics"]
+longer = 0
+for key, m in length.items():
+    for label in ("gbfs", "gbfs_manhattan"):
+        assert m[label] >= m["astar"] - 1e-9, (key, m)
+        longer += m[label] > m["astar"] + 1e-9
+assert longer > 0, "gbfs never longer than A*: not a greedy search?"
+report = json.load(open(sys.argv[4]))
+(pl,) = report["config"]["plugins"]
+assert pl["path"] == sys.argv[3] and pl["name"] == "gbfs_plugin", pl
+assert pl["sha256"] == hashlib.sha256(open(sys.argv[3], "rb").read()).hexdigest(), pl
+print(f"{len(records)} runs, gbfs longer than A* on {longer} map-planner pairs")
+EOF_PY
+for r in t2 iso cli; do
+  $py "$same" t1.json $r.json >/dev/null && ok "$r.json equals the 1-thread report (non-timing)" ||
+    bad "$r.json differs: $($py "$same" t1.json $r.json)"
+done
+
+# A resume knows the plugin's content: a changed file is refused.
+cp "$plugin" sweep/copy.so
+sed 's|"\.\./example-build/libgbfs_plugin.so"|"copy.so"|' sweep/config.json >sweep/copy.json
+"$bin" run sweep/copy.json --threads 1 --out copy.json --runs-out copy.jsonl --quiet || bad "copy run"
+printf 'x' >>sweep/copy.so
+"$bin" run sweep/copy.json --threads 1 --out copy2.json --resume copy.jsonl --quiet >resume.txt 2>&1
+[ $? -ne 0 ] && ok "resume refused after the plugin file changed ($(head -c 150 resume.txt))" ||
+  bad "resume accepted a changed plugin"
+
+# Broken plugins, built from one source with a different definition each.
+mkdir -p bad
+cat >bad/bad.cpp <<'EOF_CPP'
+#include <memory>
+#include <vector>
+#include "agvbench/algos/plugin.h"
+#include "agvbench/algos/search/astar.h"
+#ifdef UNRESOLVED
+void agvbench_test_no_such_function();
+#endif
+namespace {
+void add(void* out) {
+#ifdef UNRESOLVED
+  agvbench_test_no_such_function();
+#endif
+  agv::PlannerInfo info = agv::astar_planner();  // the built-in A*'s entry, renamed
+  info.name = PLANNER_NAME;
+  static_cast<std::vector<agv::PlannerInfo>*>(out)->push_back(std::move(info));
+}
+}  // namespace
+#ifndef NO_ENTRY
+extern "C" AGVBENCH_PLUGIN_EXPORT const AgvPlugin* agvbench_plugin_v1(void) {
+  static const AgvPlugin plugin = {
+      {ABI, VERSION, AGVBENCH_PLUGIN_TOOLCHAIN, __VERSION__}, PLUGIN_NAME, "0.1", add};
+  return &plugin;
+}
+#else
+extern "C" AGVBENCH_PLUGIN_EXPORT int agvbench_plugin_v0(void) { return 0; }
+#endif
+EOF_CPP
+cat >bad/CMakeLists.txt <<'EOF_CM'
+cmake_minimum_required(VERSION 3.22)
+project(bad_plugins LANGUAGES CXX)
+find_package(agvbench CONFIG REQUIRED)
+function(bad_plugin name)
+  add_library(${name} MODULE bad.cpp)
+  target_link_libraries(${name} PRIVATE agvbench::plugin)
+  target_compile_definitions(${name} PRIVATE ${ARGN})
+endfunction()
+set(ok_build ABI=AGVBENCH_PLUGIN_ABI VERSION=AGVBENCH_VERSION)
+bad_plugin(good_astar2 ${ok_build} PLUGIN_NAME="astar2_plugin" PLANNER_NAME="astar2")
+bad_plugin(old_version ABI=AGVBENCH_PLUGIN_ABI VERSION="0.0.1-old" PLUGIN_NAME="old_version" PLANNER_NAME="old_astar")
+bad_plugin(other_abi ABI=99 VERSION=AGVBENCH_VERSION PLUGIN_NAME="other_abi" PLANNER_NAME="abi_astar")
+bad_plugin(no_entry ${ok_build} NO_ENTRY PLUGIN_NAME="no_entry" PLANNER_NAME="x")
+bad_plugin(unresolved ${ok_build} UNRESOLVED PLUGIN_NAME="unresolved" PLANNER_NAME="u_astar")
+bad_plugin(builtin_clash ${ok_build} PLUGIN_NAME="builtin_clash" PLANNER_NAME="astar")
+bad_plugin(plugin_clash ${ok_build} PLUGIN_NAME="plugin_clash" PLANNER_NAME="gbfs")
+bad_plugin(name_clash ${ok_build} PLUGIN_NAME="gbfs_plugin" PLANNER_NAME="other_gbfs")
+# A program of one's own on the installed static libraries (no plugin): the imported targets
+# carry their dependencies.
+add_executable(consumer consumer.cpp)
+target_link_libraries(consumer PRIVATE agvbench::engine)
+EOF_CM
+cat >bad/consumer.cpp <<'EOF_CPP'
+#include <cstdio>
+#include "agvbench/algos/planner.h"
+#include "agvbench/algos/registry.h"
+#include "agvbench/engine/sweep_config.h"
+int main() {
+  agv::Grid grid(9, 9);
+  for (int y = 0; y < 8; ++y) grid.set_blocked(4, y, true);
+  agv::ConfiguredPlanner astar = agv::configure_planner("astar", nlohmann::json::object(), "astar");
+  agv::Rng rng(1, 2);
+  agv::Scratch scratch;
+  const agv::PlanResult r = agv::plan_checked(*astar.planner, {grid, {0, 0}, {8, 0}, rng, scratch});
+  const agv::SweepConfig config = agv::parse_config({{"planners", {"astar"}}, {"maps_per_cell", 2}});
+  std::printf("%s %zu %lld %s\n", agv::to_string(r.failure), r.path.size(),
+              static_cast<long long>(*r.work.collision_checks), agv::config_hash(config).c_str());
+}
+EOF_CPP
+"$cmake" -S bad -B bad-build "${tools[@]}" -DCMAKE_PREFIX_PATH="$prefix" >bad.log 2>&1 &&
+  "$cmake" --build bad-build >>bad.log 2>&1 && ok "broken test plugins built" ||
+  { tail -30 bad.log; bad "broken test plugins build"; }
+b=$work/bad-build
+# The wall at x = 4 is open at y = 8 only: the path goes round it, more than the 9 cells of the
+# straight line, and the engine's counter has its checks.
+"$b/consumer" >consumer.txt 2>&1 && $py - consumer.txt <<'EOF_PY' && ok "a program linked against agvbench::engine plans ($(cat consumer.txt))" || bad "consumer: $(cat consumer.txt)"
+import sys
+outcome, cells, checks, config_hash = open(sys.argv[1]).read().split()
+assert outcome == "none" and int(cells) > 9 and int(checks) > 0 and len(config_hash) == 16
+EOF_PY
+"$bin" list --plugin "$b/libgood_astar2.so" --json | grep -q '"astar2"' &&
+  ok "a second well-formed plugin (astar under another name) loads" || bad "good_astar2"
+echo "not a library" >notlib.so
+expect_refusal() {  # WHAT PATTERN ARGS...: exit 2 and stderr matching PATTERN
+  local what=$1 pattern=$2
+  shift 2
+  "$bin" list "$@" >out.txt 2>err.txt
+  local rc=$?
+  if [ $rc -eq 2 ] && grep -qE -- "$pattern" err.txt; then
+    ok "$what: exit 2, $(head -c 170 err.txt)"
+  else
+    bad "$what: exit $rc, $(cat err.txt)"
+  fi
+}
+expect_refusal "another agvbench version" 'libold_version\.so.*built against agvbench 0\.0\.1-old' \
+  --plugin "$b/libold_version.so"
+expect_refusal "another plugin ABI" 'libother_abi\.so.*plugin ABI 99' --plugin "$b/libother_abi.so"
+expect_refusal "no entry point" 'libno_entry\.so.*no entry point agvbench_plugin_v1' \
+  --plugin "$b/libno_entry.so"
+expect_refusal "unresolved symbol" 'libunresolved\.so.*agvbench_test_no_such_function' \
+  --plugin "$b/libunresolved.so"
+expect_refusal "planner name of a built-in" 'libbuiltin_clash\.so.*"astar" clashes with the built-in' \
+  --plugin "$b/libbuiltin_clash.so"
+expect_refusal "planner name of another plugin" \
+  'libplugin_clash\.so.*"gbfs" clashes with plugin "gbfs_plugin"' \
+  --plugin "$plugin" --plugin "$b/libplugin_clash.so"
+expect_refusal "plugin name of another plugin" 'libname_clash\.so.*"gbfs_plugin" is taken' \
+  --plugin "$plugin" --plugin "$b/libname_clash.so"
+expect_refusal "not a library" 'notlib\.so.*not a shared library' --plugin notlib.so
+expect_refusal "no such file" 'missing\.so' --plugin missing.so
+# The same refusal from a config's "plugins", before anything is written.
+sed 's|"\.\./example-build/libgbfs_plugin.so"|"../bad-build/libold_version.so"|' sweep/config.json \
+  >sweep/bad.json
+"$bin" run sweep/bad.json --out bad_report.json --quiet 2>err.txt
+[ $? -eq 2 ] && grep -q 'plugins\[0\].*libold_version' err.txt && [ ! -e bad_report.json ] &&
+  ok "config \"plugins\" with a bad plugin: exit 2, nothing written" || bad "config bad plugin: $(cat err.txt)"
+finish test_plugin

@@ -22,25 +22,24 @@ using nlohmann::json;
 constexpr int kMaps = 8;
 
 SweepConfig ompl_config() {
-  return parse_config(
-      json{{"name", "ompl-test"},
-           {"seed", 11},
-           {"generators", {"uniform", "blocks"}},
-           {"sizes", {24}},
-           {"densities", {0.1, 0.25}},
-           {"maps_per_cell", kMaps},
-           {"collision", {{"corner_rule", "no_corner_cut"}, {"clearance", 0.2}}},
-           {"map", {{"endpoints", "corners"}, {"require_solvable", true}}},
-           {"planners",
-            {{{"name", "astar"}},
-             {{"name", "ompl_rrtconnect"}, {"params", {{"max_iterations", 5000}}}},
-             {{"name", "ompl_rrtstar"}, {"params", {{"max_iterations", 1500}}}},
-             {{"name", "ompl_prmstar"}, {"params", {{"samples", 300}}}},
-             {{"name", "ompl_rrtconnect"},
-              {"label", "ompl_rrtconnect_loose"},
-              {"params", {{"max_iterations", 5000}, {"clearance", 0.0}}}}}},
-           {"baseline", "astar"},
-           {"time_limit_s", 60}});
+  return parse_config(json{{"name", "ompl-test"},
+                           {"seed", 11},
+                           {"generators", {"uniform", "blocks"}},
+                           {"sizes", {24}},
+                           {"densities", {0.1, 0.25}},
+                           {"maps_per_cell", kMaps},
+                           {"collision", {{"corner_rule", "no_corner_cut"}, {"clearance", 0.2}}},
+                           {"map", {{"endpoints", "corners"}, {"require_solvable", true}}},
+                           {"planners",
+                            {{{"name", "astar"}},
+                             {{"name", "ompl_rrtconnect"}, {"params", {{"max_iterations", 5000}}}},
+                             {{"name", "ompl_rrtstar"}, {"params", {{"max_iterations", 1500}}}},
+                             {{"name", "ompl_prmstar"}, {"params", {{"samples", 300}}}},
+                             {{"name", "ompl_rrtconnect"},
+                              {"label", "ompl_rrtconnect_loose"},
+                              {"params", {{"max_iterations", 5000}, {"clearance", 0.0}}}}}},
+                           {"baseline", "astar"},
+                           {"time_limit_s", 60}});
 }
 
 json report(const SweepConfig& config, int threads) {

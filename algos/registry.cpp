@@ -4,6 +4,7 @@
 #include <deque>
 
 #include "algos/local/fusion.h"
+#include "algos/ompl/ompl_planners.h"
 #include "algos/sampling/birrt.h"
 #include "algos/sampling/prm.h"
 #include "algos/sampling/rrt.h"
@@ -79,6 +80,7 @@ void follow_default_model(std::vector<PlannerInfo>& registry) {
 // registered before it (planner_registry() cannot be asked while it is being built).
 std::vector<PlannerInfo> build_registry() {
   std::vector<PlannerInfo> registry = standalone_planners();
+  for (PlannerInfo& info : ompl_planners()) registry.push_back(std::move(info));
   const std::vector<std::string> grid = planner_names(registry, PlannerKind::grid_search);
   registry.push_back(dwa_planner());
   registry.push_back(fusion_astar_dwa_planner(grid));

@@ -384,6 +384,8 @@ ReportComparison compare_reports(const json& before, const json& after, const Ru
   CompensatedSum log_sum;
   for (const json& p : planners) {
     const std::string label = p.value("label", std::string());
+    CompensatedSum planner_logs;
+    std::size_t planner_groups = 0;
     for (const json& cell_after : after.at("cells")) {
       const json* cell_before = find_by(before.at("cells"), "cell", cell_after.value("cell", ""));
       if (!cell_before || !find_by(cell_after.at("planners"), "planner", label) ||
@@ -395,9 +397,15 @@ ReportComparison compare_reports(const json& before, const json& after, const Ru
       if (std::isfinite(t.ratio) && t.ratio > 0.0) {
         log_sum.add(std::log(t.ratio));
         ++c.overall_groups;
+        planner_logs.add(std::log(t.ratio));
+        ++planner_groups;
       }
       c.timing.push_back(std::move(t));
     }
+    c.planner_ratios.emplace_back(
+        label, planner_groups > 0
+                   ? std::exp(planner_logs.value() / static_cast<double>(planner_groups))
+                   : kNaN);
   }
   if (c.overall_groups > 0)
     c.overall_ratio = std::exp(log_sum.value() / static_cast<double>(c.overall_groups));
@@ -464,6 +472,10 @@ std::string comparison_text(const ReportComparison& c) {
                   t.regression ? "  REGRESSION" : "");
     out << line;
   }
+  out << "per planner (geometric mean over its cells):";
+  for (const auto& [label, ratio] : c.planner_ratios)
+    out << "  " << label << " " << fixed(ratio, 3);
+  out << "\n";
   out << "overall: geometric mean of " << c.overall_groups
       << " planner/cell ratios: " << fixed(c.overall_ratio, 4);
   if (std::isfinite(c.overall_ratio))
@@ -493,6 +505,9 @@ json comparison_json(const ReportComparison& c) {
                            {"field", d.field},
                            {"before", d.before},
                            {"after", d.after}});
+  json planners = json::array();
+  for (const auto& [label, ratio] : c.planner_ratios)
+    planners.push_back({{"planner", label}, {"plan_time_ratio", number_or_null(ratio)}});
   json timing = json::array();
   for (const TimingComparison& t : c.timing)
     timing.push_back({{"planner", t.planner},
@@ -508,6 +523,7 @@ json comparison_json(const ReportComparison& c) {
   return {{"parameter_changes", c.parameter_changes},
           {"differences", differences},
           {"timing", timing},
+          {"planners", planners},
           {"overall",
            {{"plan_time_ratio", number_or_null(c.overall_ratio)},
             {"groups", c.overall_groups},

@@ -59,7 +59,10 @@ struct ReportComparison {
   std::vector<std::string> parameter_changes;  // "astar: heuristic \"octile\" -> \"euclidean\""
   std::vector<ValueDifference> differences;
   std::vector<TimingComparison> timing;  // by planner (config order), then cell
-  double overall_ratio = kNaN;           // geometric mean of every finite ratio
+  // Per planner (config order): the geometric mean of its cells' finite ratios (no test: a
+  // summary line for sweeps of many cells).
+  std::vector<std::pair<std::string, double>> planner_ratios;
+  double overall_ratio = kNaN;  // geometric mean of every finite ratio
   std::size_t overall_groups = 0;
   bool overall_regression = false;
   std::optional<double> fail_on_regression_pct;

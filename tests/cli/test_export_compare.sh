@@ -91,7 +91,7 @@ check "a second run of the same config" "$bin" run tiny.json --out tiny2.json --
 expect_exit "compare two runs of one config: exit 0" 0 "$bin" compare tiny1.json tiny2.json --runs-before tiny1.jsonl --runs-after tiny2.jsonl
 check "... no non-timing difference, a paired test per planner and cell" sh -c "grep -q 'non-timing results: identical' last.out && test \$(grep -c ' wilcoxon ' last.out) = 12 && grep -q '^overall: geometric mean of 12' last.out"
 expect_exit "compare without journals: exit 0, ratios of medians" 0 "$bin" compare tiny1.json tiny2.json
-check "compare --json" sh -c "'$bin' compare tiny1.json tiny2.json --runs-before tiny1.jsonl --runs-after tiny2.jsonl --json | $py -c 'import json,sys; d=json.load(sys.stdin); assert d[\"exit_code\"]==0 and d[\"differences\"]==[] and len(d[\"timing\"])==12 and all(t[\"test\"]==\"wilcoxon\" and t[\"pairs\"]==6 for t in d[\"timing\"])'"
+check "compare --json" sh -c "'$bin' compare tiny1.json tiny2.json --runs-before tiny1.jsonl --runs-after tiny2.jsonl --json | $py -c 'import json,sys; d=json.load(sys.stdin); assert d[\"exit_code\"]==0 and d[\"differences\"]==[] and len(d[\"timing\"])==12 and [p[\"planner\"] for p in d[\"planners\"]]==[\"dijkstra\",\"astar\",\"ma_star\"] and all(t[\"test\"]==\"wilcoxon\" and t[\"pairs\"]==6 for t in d[\"timing\"])'"
 $py - <<'PY'
 import json
 c = json.load(open("tiny.json"))

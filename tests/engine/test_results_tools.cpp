@@ -244,6 +244,8 @@ TEST(Compare, PairedTimesGiveTheGeometricMeanRatioAndAWilcoxonTest) {
     EXPECT_FALSE(t.regression);       // p = 0.0625 is not below 0.05
   }
   EXPECT_NEAR(c.overall_ratio, 3.0, 1e-12);
+  ASSERT_EQ(c.planner_ratios.size(), 3u);
+  for (const auto& [label, ratio] : c.planner_ratios) EXPECT_NEAR(ratio, 3.0, 1e-12) << label;
   EXPECT_TRUE(c.overall_regression);
   EXPECT_EQ(c.exit_code(), 1);
   EXPECT_EQ(compare_reports(a.report, a.report, &before, &after, 250.0).exit_code(), 0);

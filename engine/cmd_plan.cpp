@@ -183,7 +183,10 @@ int command_plan(const PlanCommand& cmd) {
     try {
       inst = make_map(cell.spec, rng);
     } catch (const std::invalid_argument& e) {
-      throw InputError(e.what());
+      // The fixed endpoints' fields are the command's --start and --goal.
+      const std::string what = e.what();
+      const bool endpoint = what.rfind("start: ", 0) == 0 || what.rfind("goal: ", 0) == 0;
+      throw InputError(endpoint ? "--" + what : what);
     }
     grid = std::move(inst.grid);
     start = inst.start;

@@ -86,6 +86,8 @@ expect "map: unreadable" 'missing.map' "$bin" plan --map missing.map --start 0,0
 printf 'type octile\nheight 3\nwidth 3\nmap\n...\n.@.\n...\n' >ok.map
 expect "start outside the grid" '--start: \(5,0\) is outside' "$bin" plan --map ok.map --start 5,0 --goal 2,2
 expect "goal on an obstacle" '--goal: \(1,1\) is an obstacle' "$bin" plan --map ok.map --start 0,0 --goal 1,1
+expect "fixed endpoint outside" '--start: \[25, 14\] is outside the 21x21 grid' "$bin" plan --size 21 --endpoints fixed --start 25,14 --goal 1,1
+expect "fixed endpoints, no goal" '--endpoints fixed: --start and --goal are required' "$bin" plan --size 21 --endpoints fixed --start 5,14
 expect "unknown CLI planner" 'unknown planner "nope"' "$bin" plan --planner nope
 expect "unknown CLI parameter" '--param frobnicate' "$bin" plan --param frobnicate=3
 expect "unknown CLI generator" 'unknown generator "spiral"' "$bin" plan --generator spiral

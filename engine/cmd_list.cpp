@@ -5,6 +5,7 @@
 
 #include "algos/registry.h"
 #include "engine/commands.h"
+#include "generators/map_files.h"
 #include "generators/registry.h"
 
 namespace agv {
@@ -30,8 +31,15 @@ void print_params(const std::vector<ParamSpec>& params) {
 
 int command_list(bool as_json) {
   if (as_json) {
+    nlohmann::json sources = nlohmann::json::array();
+    for (const auto& info : map_source_registry()) {
+      nlohmann::json params = nlohmann::json::object();
+      for (const auto& [name, doc] : info.params) params[name] = doc;
+      sources.push_back({{"name", info.name}, {"summary", info.summary}, {"params", params}});
+    }
     const nlohmann::json doc = {{"planners", registry_json()},
-                                {"generators", generator_registry_json()}};
+                                {"generators", generator_registry_json()},
+                                {"map_sources", sources}};
     std::cout << doc.dump(2) << "\n";
     return 0;
   }
@@ -49,6 +57,13 @@ int command_list(bool as_json) {
   for (const auto& info : generator_registry()) {
     std::cout << info.name << "  -  " << info.summary << "\n";
     print_params(info.params);
+    std::cout << "\n";
+  }
+  std::cout << "map sources (the user's map files, one cell each; a \"generators\" entry "
+               "{\"name\": ..., \"params\": {\"files\": [...]}}):\n\n";
+  for (const auto& info : map_source_registry()) {
+    std::cout << info.name << "  -  " << info.summary << "\n";
+    for (const auto& [name, doc] : info.params) std::cout << "    " << name << ": " << doc << "\n";
     std::cout << "\n";
   }
   return 0;

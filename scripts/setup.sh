@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 
 packages=(g++ cmake ninja-build pkg-config git
   libeigen3-dev libtbb-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev
-  libcli11-dev libpcg-cpp-dev libboost-dev libnanoflann-dev python3 python3-matplotlib)
+  libcli11-dev libpcg-cpp-dev libboost-dev libnanoflann-dev python3 python3-matplotlib
+  libyaml-cpp-dev libpng-dev)
 scripts/apt_need.sh "${packages[@]}"
 
 jobs=$(nproc 2>/dev/null || echo 2)

@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "engine/commands.h"
 #include "engine/plugins.h"
+#include "generators/map_files.h"
 #include "generators/registry.h"
 
 namespace agv {
@@ -55,10 +56,11 @@ Selection select(const std::vector<std::string>& names) {
   for (const auto& name : names) {
     bool known = find_planner(name) != nullptr;
     for (const auto& g : generator_registry()) known = known || g.name == name;
+    for (const auto& m : map_source_registry()) known = known || m.name == name;
     if (!known)
-      throw InputError(
-          "list: \"" + name +
-          "\" is neither a planner nor a generator (agvbench list --brief names them)");
+      throw InputError("list: \"" + name +
+                       "\" is neither a planner, a generator nor a map source (agvbench list "
+                       "--brief names them)");
     s.names.insert(name);
   }
   return s;
@@ -82,8 +84,15 @@ int command_list(bool as_json) {
 int command_list(const ListOptions& options) {
   const Selection only = select(options.names);
   if (options.json) {
+    nlohmann::json sources = nlohmann::json::array();
+    for (const auto& info : map_source_registry()) {
+      nlohmann::json params = nlohmann::json::object();
+      for (const auto& [name, doc] : info.params) params[name] = doc;
+      sources.push_back({{"name", info.name}, {"summary", info.summary}, {"params", params}});
+    }
     nlohmann::json doc = {{"planners", selected(registry_json(), only)},
-                          {"generators", selected(generator_registry_json(), only)}};
+                          {"generators", selected(generator_registry_json(), only)},
+                          {"map_sources", selected(sources, only)}};
     // Only when plugins are loaded (--plugin), so the plain listing keeps its shape.
     if (const auto plugins = loaded_plugins(); !plugins.empty()) {
       doc["plugins"] = nlohmann::json::array();
@@ -105,6 +114,9 @@ int command_list(const ListOptions& options) {
     for (const auto& info : generator_registry())
       if (only.has(info.name))
         std::printf("generator  %-24s %-12s %s\n", info.name.c_str(), "", info.summary.c_str());
+    for (const auto& info : map_source_registry())
+      if (only.has(info.name))
+        std::printf("map source %-24s %-12s %s\n", info.name.c_str(), "", info.summary.c_str());
     return 0;
   }
   bool any_planner = false;
@@ -131,6 +143,17 @@ int command_list(const ListOptions& options) {
     if (!only.has(info.name)) continue;
     std::cout << info.name << "  -  " << info.summary << "\n";
     print_params(info.params);
+    std::cout << "\n";
+  }
+  bool any_source = false;
+  for (const auto& info : map_source_registry()) any_source = any_source || only.has(info.name);
+  if (any_source)
+    std::cout << "map sources (the user's map files, one cell each; a \"generators\" entry "
+                 "{\"name\": ..., \"params\": {\"files\": [...]}}):\n\n";
+  for (const auto& info : map_source_registry()) {
+    if (!only.has(info.name)) continue;
+    std::cout << info.name << "  -  " << info.summary << "\n";
+    for (const auto& [name, doc] : info.params) std::cout << "    " << name << ": " << doc << "\n";
     std::cout << "\n";
   }
   return 0;

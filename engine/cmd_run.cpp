@@ -63,9 +63,14 @@ std::pair<int, int> parse_shard(const std::string& text) {
 std::string run_count_text(const SweepConfig& config, const SweepPlan& plan) {
   const long long full = plan.map_tasks() * static_cast<long long>(config.planners.size());
   const long long runs = scheduled_runs(config, plan);
-  std::string text = std::to_string(plan.cells.size()) + " cells x " +
-                     std::to_string(plan.maps_per_cell) + " maps x " +
-                     std::to_string(config.planners.size()) + " planners = ";
+  bool uniform = true;  // map sources' cells hold as many maps as their files have queries
+  for (const auto& cell : plan.cells) uniform = uniform && cell.maps == plan.cells.front().maps;
+  std::string text =
+      uniform ? std::to_string(plan.cells.size()) + " cells x " +
+                    std::to_string(plan.cells.empty() ? 0 : plan.cells.front().maps) + " maps x "
+              : std::to_string(plan.cells.size()) + " cells, " + std::to_string(plan.map_tasks()) +
+                    " maps x ";
+  text += std::to_string(config.planners.size()) + " planners = ";
   if (runs == full) return text + std::to_string(runs) + " runs";
   return text + std::to_string(full) + ", of which " + std::to_string(runs) +
          " runs are scheduled (planners with an \"only\" scope)";
@@ -85,10 +90,13 @@ void check_run_paths(const RunCommand& cmd, const std::string& config_path,
                                  ? OutputPath{"--resume", options.resume_path, OutputKind::appended}
                                  : OutputPath{cmd.runs_out.empty() ? "runs" : "--runs-out",
                                               options.runs_path, OutputKind::new_journal};
-  check_paths({{"config file", config_path}},
-              {{cmd.out.empty() ? "report" : "--out", config.report_path},
-               journal,
-               {"--db", cmd.db, OutputKind::database}});
+  std::vector<InputPath> inputs = {{"config file", config_path}};
+  for (const auto& g : config.generators)  // a map source's files are inputs too
+    if (g.files)
+      for (const auto& f : g.files->files) inputs.push_back({"map file", f.path});
+  check_paths(inputs, {{cmd.out.empty() ? "report" : "--out", config.report_path},
+                       journal,
+                       {"--db", cmd.db, OutputKind::database}});
   if (!cmd.db.empty()) check_results_db(cmd.db, "--db");
   ignore_file_size_signal();
 }

@@ -64,7 +64,7 @@ std::string read_task_request(const std::string& line, const MapTaskContext& con
     if (!p.is_number_unsigned() || p.get<std::uint64_t>() >= count)
       return "planner index " + p.dump() + " is not in [0, " + std::to_string(count) + ")";
     const auto index = static_cast<std::size_t>(p.get<std::uint64_t>());
-    if (map_index >= scoped_maps(context.config.planners[index], cell, context.plan.maps_per_cell))
+    if (map_index >= scoped_maps(context.config.planners[index], cell))
       return "planner " + std::to_string(index) + " is not scheduled on task " +
              std::to_string(out.task);
     out.planners.push_back(index);
@@ -283,7 +283,9 @@ int worker_main(std::int64_t memory_mb) {
   SweepConfig config;
   MapTaskWorkspace workspace;
   try {
-    config = parse_config(nlohmann::json::parse(line).at("config"));
+    const auto first = nlohmann::json::parse(line);
+    // A map source's files are relative to the config's folder, which the parent names.
+    config = parse_config(first.at("config"), first.value("base_dir", std::string(".")));
     workspace.planners = configure_planners(config);
   } catch (const std::exception& e) {
     std::cout << nlohmann::json{{"fatal", e.what()}}.dump() << "\n" << std::flush;

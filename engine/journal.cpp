@@ -116,6 +116,7 @@ bool RecordRestorer::restore(const json& rec, const std::string& where) {
                        "; this agvbench reads tool \"" + kJournalTool + "\", journal_version " +
                        std::to_string(kJournalVersion) + ")");
     const std::string hash = rec.at("config_hash").get<std::string>();
+    if (hash != config_hash_) refuse_changed_map_file(rec, where);
     if (hash != config_hash_)
       throw InputError(where + ": journal was written by a different config (hash " + hash +
                        ", this config " + config_hash_ + ")");
@@ -124,10 +125,10 @@ bool RecordRestorer::restore(const json& rec, const std::string& where) {
     const auto planner = planner_index_.find(rec.at("planner").get<std::string>());
     if (planner == planner_index_.end()) throw InputError(where + ": unknown planner label");
     const int map_index = rec.at("map_index").get<int>();
-    if (map_index < 0 || map_index >= results_.plan.maps_per_cell)
+    const SweepCell& sweep_cell = results_.plan.cells[static_cast<std::size_t>(cell->second)];
+    if (map_index < 0 || map_index >= sweep_cell.maps)
       throw InputError(where + ": map_index out of range");
-    const std::int64_t task =
-        static_cast<std::int64_t>(cell->second) * results_.plan.maps_per_cell + map_index;
+    const std::int64_t task = results_.plan.task_of(sweep_cell, map_index);
     if (!results_.scheduled(task, planner->second))
       throw InputError(where + ": planner \"" + planner->first +
                        "\" is not scheduled on this map (outside its \"only\" scope)");
@@ -167,6 +168,19 @@ bool RecordRestorer::restore(const json& rec, const std::string& where) {
   }
 }
 
+void RecordRestorer::refuse_changed_map_file(const json& rec, const std::string& where) const {
+  if (!rec.is_object() || !rec.contains("map_file") || !rec.at("map_file").is_object()) return;
+  const auto c = cell_index_.find(rec.value("cell", std::string()));
+  if (c == cell_index_.end()) return;
+  const SweepCell& now = results_.plan.cells[static_cast<std::size_t>(c->second)];
+  const std::string then = rec.at("map_file").value("content_hash", std::string());
+  if (now.file != nullptr && then != now.file->content_hash)
+    throw InputError(where + ": map file " + now.file->path +
+                     " changed since the journal was written (content hash " + then + " then, " +
+                     now.file->content_hash +
+                     " now): a changed map file is another sweep; start a new journal");
+}
+
 JournalStats restore_journal(const std::string& path, const std::string& config_hash,
                              SweepResults& results) {
   require_regular_file(path, "journal");
@@ -192,10 +206,23 @@ JournalStats restore_journal(const std::string& path, const std::string& config_
     json rec = json::parse(line, nullptr, false);
     if (rec.is_discarded() || !rec.is_object())
       throw InputError(where + ": malformed journal record");
-    if (restorer.restore(rec, where)) {
-      ++stats.records;
-    } else {
-      ++stats.duplicates;
+    try {
+      if (restorer.restore(rec, where)) {
+        ++stats.records;
+      } else {
+        ++stats.duplicates;
+      }
+    } catch (const InputError&) {
+      // A journal of another config: when a map file changed, name it, whichever record of the
+      // journal belongs to its cell.
+      if (rec.value("config_hash", json()) == json(config_hash)) throw;
+      std::int64_t later_no = line_no;
+      while (std::getline(in, line)) {
+        ++later_no;
+        const json later = json::parse(line, nullptr, false);
+        restorer.refuse_changed_map_file(later, path + ":" + std::to_string(later_no));
+      }
+      throw;
     }
   }
   return stats;

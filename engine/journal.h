@@ -77,6 +77,9 @@ class RecordRestorer {
   // Returns false when the run was already restored (a duplicate). Throws InputError naming
   // `where` for a record of another config or of a cell, map or planner this sweep lacks.
   bool restore(const nlohmann::json& record, const std::string& where);
+  // Throws InputError naming the map file when `record` is of a map source's cell whose file
+  // has changed since the record was written (its content hash differs).
+  void refuse_changed_map_file(const nlohmann::json& record, const std::string& where) const;
 
  private:
   std::string config_hash_;

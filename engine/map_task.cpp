@@ -32,16 +32,45 @@ MapSlot map_slot_of(const MapInstance& inst) {
 
 namespace {
 
-MapInstance make_task_map(const MapTaskContext& context, std::int64_t task) {
+// A task's map: generated, or a map source's file grid (shared by the cell's tasks, never
+// copied) with one query.
+struct TaskMap {
+  MapInstance generated;
+  const Grid* grid = nullptr;
+  Cell start;
+  Cell goal;
+  double scen_optimum = -1.0;  // negative: none
+  MapSlot slot;
+};
+
+TaskMap make_task_map(const MapTaskContext& context, std::int64_t task) {
   const SweepCell& cell = context.plan.cell_of(task);
-  Rng rng = map_rng(context.config.seed, cell, context.plan.map_index_of(task));
-  return make_map(cell.spec, rng);
+  const int map_index = context.plan.map_index_of(task);
+  Rng rng = map_rng(context.config.seed, cell, map_index);
+  TaskMap out;
+  if (cell.file != nullptr) {
+    const FileQuery q = file_query(*cell.file, cell.queries, map_index, cell.spec, rng);
+    out.grid = &cell.file->grid;
+    out.start = q.start;
+    out.goal = q.goal;
+    out.scen_optimum = q.scen_optimum;
+    out.slot.rejections = q.rejections;
+    out.slot.obstacle_fraction = cell.density;
+    out.slot.done = true;
+    return out;
+  }
+  out.generated = make_map(cell.spec, rng);
+  out.grid = &out.generated.grid;
+  out.start = out.generated.start;
+  out.goal = out.generated.goal;
+  out.slot = map_slot_of(out.generated);
+  return out;
 }
 
 }  // namespace
 
 MapSlot regenerate_map_slot(const MapTaskContext& context, std::int64_t task) {
-  return map_slot_of(make_task_map(context, task));
+  return make_task_map(context, task).slot;
 }
 
 nlohmann::json MapTaskRun::record() const {
@@ -67,10 +96,11 @@ MapSlot run_map_task(const MapTaskContext& context, std::int64_t task,
                      const std::function<void(const MapTaskRun&)>& on_run) {
   const SweepCell& cell = context.plan.cell_of(task);
   const int map_index = context.plan.map_index_of(task);
-  const MapInstance inst = make_task_map(context, task);
-  const MapSlot slot = map_slot_of(inst);
+  const TaskMap map = make_task_map(context, task);
+  const MapSlot& slot = map.slot;
   // Shared by the task's runs: the optimal lengths are computed once per corner rule.
-  MapReference ref(inst.grid, inst.start, inst.goal, context.config.collision);
+  MapReference ref(*map.grid, map.start, map.goal, context.config.collision);
+  if (map.scen_optimum >= 0.0) ref.set_scenario_optimum(map.scen_optimum);
   for (const std::size_t p : planners) {
     const PlannerEntry& entry = context.config.planners.at(p);
     Rng rng = run_rng(context.config.seed, cell, map_index, entry.label);

@@ -44,6 +44,8 @@ inline constexpr std::array kMetricSpecs = {
     // The per-map references: their ratios between two planners equal path_length's.
     MetricSpec{"optimality_ratio", kSmaller, kPlain, false},
     MetricSpec{"any_angle_ratio", kSmaller, kPlain, false},
+    // A map source's .scen optimum (docs/METRICS.md "scen_ratio"): ratios equal path_length's.
+    MetricSpec{"scen_ratio", kSmaller, kPlain, false},
     // Work counters (docs/METRICS.md "Work counters"): counts, 0 on trivial maps.
     MetricSpec{"search_expansions", kSmaller, kShifted},
     MetricSpec{"samples", kSmaller, kShifted},

@@ -68,9 +68,8 @@ std::size_t metric_index(std::string_view name) {
 std::vector<double> successful_values(const SweepResults& r, const SweepCell& cell,
                                       std::size_t planner, std::size_t metric) {
   std::vector<double> out;
-  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
-    const RunSlot& s =
-        r.run(static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m, planner);
+  for (int m = 0; m < cell.maps; ++m) {
+    const RunSlot& s = r.run(cell.first_task + m, planner);
     if (s.done && s.outcome == Outcome::success && std::isfinite(s.metrics[metric]))
       out.push_back(s.metrics[metric]);
   }
@@ -84,8 +83,8 @@ json planner_cell_json(const SweepResults& r, const SweepCell& cell, std::size_t
   std::vector<double> plan_times;
   std::map<std::string, std::vector<double>> phases;
   std::map<std::string, std::vector<double>> extras;
-  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
-    const RunSlot& s = r.run(static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m, p);
+  for (int m = 0; m < cell.maps; ++m) {
+    const RunSlot& s = r.run(cell.first_task + m, p);
     if (!s.done) continue;
     ++runs;
     ++counts[static_cast<int>(s.outcome)];
@@ -138,9 +137,8 @@ bool succeeded(const RunSlot& s) { return s.done && s.outcome == Outcome::succes
 // "Paired comparisons").
 bool defines(const SweepResults& r, const SweepCell& cell, std::size_t planner,
              std::string_view name) {
-  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
-    const RunSlot& s =
-        r.run(static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m, planner);
+  for (int m = 0; m < cell.maps; ++m) {
+    const RunSlot& s = r.run(cell.first_task + m, planner);
     if (succeeded(s) && std::isfinite(slot_value(s, name))) return true;
   }
   return false;
@@ -151,8 +149,8 @@ void paired_values(const SweepResults& r, const SweepCell& cell, std::size_t a, 
                    std::string_view name, std::vector<double>& va, std::vector<double>& vb) {
   va.clear();
   vb.clear();
-  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
-    const std::int64_t task = static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m;
+  for (int m = 0; m < cell.maps; ++m) {
+    const std::int64_t task = cell.first_task + m;
     const RunSlot& sa = r.run(task, a);
     const RunSlot& sb = r.run(task, b);
     if (!succeeded(sa) || !succeeded(sb)) continue;
@@ -171,8 +169,8 @@ void paired_times(const SweepResults& r, const SweepCell& cell, std::size_t a, s
                   std::vector<double>& va, std::vector<double>& vb) {
   va.clear();
   vb.clear();
-  for (int m = 0; m < r.plan.maps_per_cell; ++m) {
-    const std::int64_t task = static_cast<std::int64_t>(cell.index) * r.plan.maps_per_cell + m;
+  for (int m = 0; m < cell.maps; ++m) {
+    const std::int64_t task = cell.first_task + m;
     const RunSlot& sa = r.run(task, a);
     const RunSlot& sb = r.run(task, b);
     if (!sa.done || !sb.done) continue;
@@ -219,8 +217,8 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
   for (const auto& cell : r.plan.cells) {
     std::vector<double> fractions;
     std::int64_t rejections = 0, maps = 0;
-    for (int m = 0; m < r.plan.maps_per_cell; ++m) {
-      const MapSlot& ms = r.maps[static_cast<std::size_t>(cell.index) * r.plan.maps_per_cell + m];
+    for (int m = 0; m < cell.maps; ++m) {
+      const MapSlot& ms = r.maps[static_cast<std::size_t>(cell.first_task + m)];
       if (!ms.done) continue;
       ++maps;
       rejections += ms.rejections;

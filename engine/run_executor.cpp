@@ -158,7 +158,20 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
   } else if (bound && *bound == 0.0) {
     out.metrics[kAnyAngleMetric] = 1.0;
   }
+  // A MovingAI scenario's optimum (docs/METRICS.md "scen_ratio"): 1 for an optimal grid search.
+  if (auto scen = map.scenario_optimum(); scen && *scen > 0.0) {
+    out.metrics[kScenMetric] = m.path_length / *scen;
+  } else if (scen && *scen == 0.0) {
+    out.metrics[kScenMetric] = 1.0;
+  }
   return out;
+}
+
+std::optional<double> MapReference::scenario_optimum() const {
+  if (!scenario_optimum_) return std::nullopt;
+  if (model_.corner_rule != CornerRule::no_corner_cut || model_.clearance != 0.0)
+    return std::nullopt;
+  return scenario_optimum_;
 }
 
 }  // namespace agv

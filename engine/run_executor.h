@@ -43,12 +43,13 @@ std::optional<Outcome> outcome_from_string(std::string_view name);
 // The work counters a planner defines (algos/planner.h WorkCounters) are not among them: they
 // travel under their own names with the planner's extra metrics (RunOutput::result.extra), so
 // only planners that define one report it (docs/METRICS.md "Work counters").
-inline constexpr std::array<std::string_view, kPathMetricCount + 2> kRunMetricNames = {
-    "path_length",   "path_length_m",    "waypoints",      "turns",         "turn_angle_rad",
-    "max_turn_rad",  "smoothness_mean",  "smoothness_max", "min_clearance", "min_clearance_m",
-    "motion_time_s", "optimality_ratio", "any_angle_ratio"};
+inline constexpr std::array<std::string_view, kPathMetricCount + 3> kRunMetricNames = {
+    "path_length",   "path_length_m",    "waypoints",       "turns",         "turn_angle_rad",
+    "max_turn_rad",  "smoothness_mean",  "smoothness_max",  "min_clearance", "min_clearance_m",
+    "motion_time_s", "optimality_ratio", "any_angle_ratio", "scen_ratio"};
 inline constexpr std::size_t kOptimalityMetric = kPathMetricCount;
 inline constexpr std::size_t kAnyAngleMetric = kPathMetricCount + 1;
+inline constexpr std::size_t kScenMetric = kPathMetricCount + 2;
 using RunMetrics = std::array<double, kRunMetricNames.size()>;
 
 // What the engine knows about a map, shared by every planner run on it.
@@ -67,6 +68,11 @@ class MapReference {
   // The any-angle optimum under the model's rule (core/any_angle.h), computed once: a lower
   // bound of every path valid under the model (its clearance only removes paths).
   std::optional<double> any_angle_length(Scratch& scratch);
+  // A MovingAI scenario's optimal length for this query (a map source's .scen query).
+  void set_scenario_optimum(double length) { scenario_optimum_ = length; }
+  // The scenario's optimum where the model is the scenario's convention (MovingAI: no corner
+  // cutting, clearance 0, octile lengths), so the two lengths measure the same thing.
+  std::optional<double> scenario_optimum() const;
 
  private:
   const Grid& grid_;
@@ -77,6 +83,7 @@ class MapReference {
   std::array<std::optional<double>, 3> optimal_{};
   bool any_angle_known_ = false;
   std::optional<double> any_angle_;
+  std::optional<double> scenario_optimum_;
 };
 
 struct RunOutput {

@@ -35,6 +35,9 @@ json run_record(const std::string& config_hash, std::uint64_t seed, const SweepC
       {"outcome", std::string(to_string(run.outcome))},
       {"metrics", metrics},
       {"timing", {{"plan_time_ns", run.plan_time_ns}, {"phases", phases}}}};
+  // A map source's cell: the file its maps come from, so a resume can say which file changed.
+  if (cell.file != nullptr)
+    rec["map_file"] = {{"name", cell.file->name}, {"content_hash", cell.file->content_hash}};
   if (!run.message.empty()) rec["message"] = run.message;
   return rec;
 }

@@ -219,6 +219,12 @@ void parse_map_options(const json& j, MapSpec& map) {
   r.finish();
 }
 
+// A registered generator or map source: InputError naming `where` otherwise.
+void check_generator_name(const std::string& name, const std::string& where) {
+  if (find_map_source(name) != nullptr) return;
+  generator_or_throw(name, where);
+}
+
 // Generator names (a planner's "only" scope).
 std::vector<std::string> parse_generator_names(ObjectReader& r) {
   std::vector<std::string> generators;
@@ -227,7 +233,7 @@ std::vector<std::string> parse_generator_names(ObjectReader& r) {
     const std::string f = r.field("generators") + "[" + std::to_string(i) + "]";
     if (!arr[i].is_string()) throw InputError(f + ": expected a generator name");
     const auto name = arr[i].get<std::string>();
-    generator_or_throw(name, f);
+    check_generator_name(name, f);
     generators.push_back(name);
   }
   return generators;
@@ -235,7 +241,7 @@ std::vector<std::string> parse_generator_names(ObjectReader& r) {
 
 // The sweep's generators, each a name or {"name": ..., "params": {...}}; the shape parameters
 // are resolved once sizes are known (a maze corridor must fit every size).
-std::vector<GeneratorEntry> parse_generators(ObjectReader& r) {
+std::vector<GeneratorEntry> parse_generators(ObjectReader& r, std::vector<json>& stated_files) {
   std::vector<GeneratorEntry> generators;
   std::set<std::string> names;
   const json& arr = require_array(r, "generators");
@@ -249,11 +255,16 @@ std::vector<GeneratorEntry> parse_generators(ObjectReader& r) {
       if (!g.has("name")) throw InputError(f + ".name: missing");
       e.name = g.string("name", "");
       if (g.has("params")) e.params = g.raw("params");
+      // Written by config_as_run for a map source: checked against the files once they are read.
+      if (g.has("map_files")) {
+        stated_files.resize(i + 1);
+        stated_files[i] = g.raw("map_files");
+      }
       g.finish();
     } else {
       throw InputError(f + ": expected a generator name or {\"name\": ..., \"params\": {...}}");
     }
-    generator_or_throw(e.name, f);
+    check_generator_name(e.name, f);
     if (!names.insert(e.name).second)
       throw InputError(f + ": generator \"" + e.name + "\" appears twice (it names the cells)");
     generators.push_back(std::move(e));
@@ -266,6 +277,7 @@ void resolve_generators(std::vector<GeneratorEntry>& generators,
   for (std::size_t i = 0; i < generators.size(); ++i) {
     GeneratorEntry& e = generators[i];
     const std::string where = "generators[" + std::to_string(i) + "].params";
+    if (find_map_source(e.name) != nullptr) continue;  // read with the map options
     const GeneratorInfo& info = *find_generator(e.name);
     for (const auto& size : sizes)
       e.resolved =
@@ -280,6 +292,7 @@ void resolve_generators(std::vector<GeneratorEntry>& generators,
 // stands for all.
 void check_cells(const SweepConfig& c) {
   for (std::size_t g = 0; g < c.generators.size(); ++g) {
+    if (c.generators[g].files) continue;  // read_map_files checked its files
     for (std::size_t k = 0; k < c.sizes.size(); ++k) {
       MapSpec spec = c.map;
       spec.generator = c.generators[g].name;
@@ -297,6 +310,47 @@ void check_cells(const SweepConfig& c) {
                          std::to_string(spec.width) + "x" + std::to_string(spec.height) + ")");
       }
     }
+  }
+}
+
+json map_files_json(const MapFileSet& set) {
+  json out = json::array();
+  for (const auto& f : set.files)
+    out.push_back({{"name", f.name}, {"content_hash", f.content_hash}});
+  return out;
+}
+
+// Reads every map source's files (InputError naming the file and line), checks each file against
+// the sweep's endpoint rule, and compares them with the files a config_as_run names (an isolation
+// worker's, a report's), so a map file changed in between is refused by name.
+void read_map_files(SweepConfig& c, const std::vector<json>& stated_files) {
+  for (std::size_t i = 0; i < c.generators.size(); ++i) {
+    GeneratorEntry& e = c.generators[i];
+    const MapSourceInfo* source = find_map_source(e.name);
+    if (source == nullptr) continue;
+    const std::string where = "generators[" + std::to_string(i) + "].params";
+    auto set =
+        std::make_shared<MapFileSet>(source->load(e.params, c.base_dir, c.map.cell_edge, where));
+    if (set->queries == QuerySource::endpoints)
+      for (const auto& f : set->files) check_file_endpoints(f, c.map);
+    if (i < stated_files.size() && !stated_files[i].is_null()) {
+      const json now = map_files_json(*set);
+      const json& then = stated_files[i];
+      for (std::size_t k = 0; k < now.size(); ++k) {
+        if (!then.is_array() || k >= then.size() || then[k].value("name", "") != now[k]["name"])
+          throw InputError("generators[" + std::to_string(i) + "].map_files: " + then.dump() +
+                           " is not the files its params match now (" + now.dump() + ")");
+        if (then[k].value("content_hash", "") != now[k]["content_hash"])
+          throw InputError("generators[" + std::to_string(i) + "]: map file " + set->files[k].path +
+                           " changed (content hash " + then[k].value("content_hash", "") +
+                           " then, " + now[k]["content_hash"].get<std::string>() + " now)");
+      }
+      if (then.size() != now.size())
+        throw InputError("generators[" + std::to_string(i) + "].map_files: " + then.dump() +
+                         " is not the files its params match now (" + now.dump() + ")");
+    }
+    e.resolved = set->resolved;
+    e.files = std::move(set);
   }
 }
 
@@ -447,12 +501,14 @@ void load_config_plugins(const json& list, const std::string& base_dir) {
 
 SweepConfig parse_config(const json& j, const std::string& base_dir) {
   SweepConfig c;
+  c.base_dir = base_dir;
+  std::vector<json> stated_files;
   ObjectReader r(j, "");
   if (r.has("plugins")) load_config_plugins(r.raw("plugins"), base_dir);
   c.plugins = loaded_plugins();
   c.name = r.string("name", c.name);
   c.seed = static_cast<std::uint64_t>(r.integer("seed", 1, kSeedRange));
-  if (r.has("generators")) c.generators = parse_generators(r);
+  if (r.has("generators")) c.generators = parse_generators(r, stated_files);
   if (r.has("sizes")) c.sizes = parse_sizes(r);
   if (r.has("densities")) c.densities = parse_densities(r);
   resolve_generators(c.generators, c.sizes);
@@ -461,6 +517,7 @@ SweepConfig parse_config(const json& j, const std::string& base_dir) {
   c.collision = parse_collision(optional_object(r, "collision"));
   c.map.solvable_rule = c.collision.corner_rule;
   parse_map_options(optional_object(r, "map"), c.map);
+  read_map_files(c, stated_files);
   if (!r.has("planners")) throw InputError("planners: missing (list at least one planner)");
   c.planners = parse_planners(r, c);
   c.baseline = r.string("baseline", "");
@@ -574,7 +631,8 @@ SweepConfig load_config(const std::string& path) {
   const std::string text = read_text_file(path, "config file", std::uintmax_t{64} << 20);
   const json j = parse_without_duplicate_keys(text, path);
   try {
-    return parse_config(j, std::filesystem::path(path).parent_path().string());
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    return parse_config(j, folder.empty() ? "." : folder);
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
   }
@@ -613,8 +671,10 @@ json config_fields(const SweepConfig& c) {
     planners.push_back(std::move(entry));
   }
   json generators = json::array();
-  for (const auto& g : c.generators)
+  for (const auto& g : c.generators) {
     generators.push_back({{"name", g.name}, {"params", g.resolved}});
+    if (g.files) generators.back()["map_files"] = map_files_json(*g.files);
+  }
   const MapSpec& m = c.map;
   return {{"name", c.name},
           {"seed", c.seed},

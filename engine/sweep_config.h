@@ -4,6 +4,7 @@
 // an InputError naming the field (exit code 2), never a silently ignored setting.
 
 #include <cstdint>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "core/collision_model.h"
 #include "engine/metrics.h"
 #include "engine/plugins.h"
+#include "generators/map_files.h"
 #include "generators/map_generators.h"
 #include "generators/registry.h"
 
@@ -61,6 +63,9 @@ struct GeneratorEntry {
   std::string name;  // registry name; unique within the sweep (it names the cells)
   nlohmann::json params = nlohmann::json::object();    // as given
   nlohmann::json resolved = nlohmann::json::object();  // every shape parameter with its value
+  // A map source (generators/map_files.h): its files, read when the config is loaded, one cell
+  // each; null for a generator, whose cells are sizes x densities.
+  std::shared_ptr<const MapFileSet> files = nullptr;
 };
 
 struct PlannerEntry {
@@ -99,17 +104,21 @@ struct SweepConfig {
   // Execution settings: they change how a sweep runs, never what it reports.
   int threads = 0;  // 0 = all hardware threads
   std::string report_path = "reports/out/report.json";
-  std::string runs_path;  // JSON Lines of per-run records; empty = none
+  std::string runs_path;       // JSON Lines of per-run records; empty = none
+  std::string base_dir = ".";  // the config file's folder: map sources' files are relative to it
 };
 
-// Throws InputError naming the field. Loads the config's "plugins" first (engine/plugins.h),
-// relative paths from `base_dir` (the config file's folder; empty: the working directory).
-SweepConfig parse_config(const nlohmann::json& j, const std::string& base_dir = "");
+// Throws InputError naming the field. Loads the config's "plugins" first (engine/plugins.h); a
+// plugin's path and a map source's file patterns are relative to `base_dir` (load_config: the
+// config file's folder).
+SweepConfig parse_config(const nlohmann::json& j, const std::string& base_dir = ".");
 // Reads and parses; malformed JSON -> InputError with the file, line and column.
 SweepConfig load_config(const std::string& path);
 
 // The config as run, every default filled in, execution settings left out: the part of a
 // report that the determinism guarantee covers.
+// A map source's entry lists its files with their content hashes ("map_files"), so a changed
+// map file is another config.
 nlohmann::json config_as_run(const SweepConfig& config);
 
 // Stable hash of config_as_run (journal compatibility, task ids), "sources" left out (it is

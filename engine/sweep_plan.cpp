@@ -25,9 +25,33 @@ std::string cell_key(const std::string& generator, GridSize size, double density
 
 SweepPlan plan_sweep(const SweepConfig& config) {
   SweepPlan plan;
-  plan.maps_per_cell = config.maps_per_cell;
   for (const auto& entry : config.generators) {
     const std::string& generator = entry.name;
+    if (entry.files) {
+      // One cell per file, named by it.
+      for (const MapFile& file : entry.files->files) {
+        SweepCell cell;
+        cell.index = static_cast<int>(plan.cells.size());
+        cell.generator = generator;
+        cell.size = {file.grid.width(), file.grid.height()};
+        cell.density = static_cast<double>(file.grid.obstacle_count()) /
+                       (static_cast<double>(file.grid.width()) * file.grid.height());
+        cell.key = generator + "/" + file.name;
+        cell.spec = config.map;
+        cell.spec.generator = generator;
+        cell.spec.width = cell.size.width;
+        cell.spec.height = cell.size.height;
+        cell.spec.cell_edge = file.grid.cell_edge();
+        cell.file = &file;
+        cell.queries = entry.files->queries;
+        cell.first_task = plan.tasks;
+        cell.maps = cell.queries == QuerySource::scen ? static_cast<int>(file.queries.size())
+                                                      : config.maps_per_cell;
+        plan.tasks += cell.maps;
+        plan.cells.push_back(std::move(cell));
+      }
+      continue;
+    }
     for (const auto& size : config.sizes) {
       for (double density : config.densities) {
         SweepCell cell;
@@ -42,6 +66,9 @@ SweepPlan plan_sweep(const SweepConfig& config) {
         cell.spec.width = size.width;
         cell.spec.height = size.height;
         cell.spec.density = density;
+        cell.first_task = plan.tasks;
+        cell.maps = config.maps_per_cell;
+        plan.tasks += cell.maps;
         plan.cells.push_back(std::move(cell));
       }
     }
@@ -49,7 +76,8 @@ SweepPlan plan_sweep(const SweepConfig& config) {
   return plan;
 }
 
-int scoped_maps(const PlannerEntry& planner, const SweepCell& cell, int maps_per_cell) {
+int scoped_maps(const PlannerEntry& planner, const SweepCell& cell) {
+  const int maps_per_cell = cell.maps;
   const PlannerScope& only = planner.only;
   const auto listed = [](const auto& list, const auto& value) {
     if (list.empty()) return true;
@@ -66,7 +94,7 @@ int scoped_maps(const PlannerEntry& planner, const SweepCell& cell, int maps_per
 std::int64_t scheduled_runs(const SweepConfig& config, const SweepPlan& plan) {
   std::int64_t runs = 0;
   for (const auto& cell : plan.cells)
-    for (const auto& p : config.planners) runs += scoped_maps(p, cell, plan.maps_per_cell);
+    for (const auto& p : config.planners) runs += scoped_maps(p, cell);
   return runs;
 }
 
@@ -108,10 +136,25 @@ constexpr double kMemoryShare = 0.5;
 
 SweepSize sweep_size(const SweepConfig& config) {
   SweepSize size;
-  size.cells = static_cast<double>(config.generators.size()) *
-               static_cast<double>(config.sizes.size()) *
+  // Map sources: a cell per file, a map per query (scen) or maps_per_cell; counted apart, and
+  // every planner counted on all of their maps (an upper bound under "only" scopes).
+  double generated = 0.0, file_cells = 0.0, file_maps = 0.0;
+  for (const auto& g : config.generators) {
+    if (!g.files) {
+      ++generated;
+      continue;
+    }
+    for (const auto& f : g.files->files) {
+      ++file_cells;
+      file_maps += g.files->queries == QuerySource::scen ? static_cast<double>(f.queries.size())
+                                                         : config.maps_per_cell;
+    }
+  }
+  size.cells = generated * static_cast<double>(config.sizes.size()) *
                static_cast<double>(config.densities.size());
-  size.map_tasks = size.cells * config.maps_per_cell;
+  size.map_tasks = size.cells * config.maps_per_cell + file_maps;
+  size.scheduled_runs = file_maps * static_cast<double>(config.planners.size());
+  size.cells += file_cells;
   size.run_slots = size.map_tasks * static_cast<double>(config.planners.size());
   // A scoped planner runs on the cells its lists leave (each a subset of the sweep's axis, so
   // their product) and on the first maps of each, as scoped_maps counts them.
@@ -122,7 +165,7 @@ SweepSize sweep_size(const SweepConfig& config) {
   for (const auto& p : config.planners) {
     const int maps = p.only.maps_per_cell > 0 ? std::min(p.only.maps_per_cell, config.maps_per_cell)
                                               : config.maps_per_cell;
-    size.scheduled_runs += listed(p.only.generators, config.generators.size()) *
+    size.scheduled_runs += listed(p.only.generators, static_cast<std::size_t>(generated)) *
                            listed(p.only.sizes, config.sizes.size()) *
                            listed(p.only.densities, config.densities.size()) * maps;
   }

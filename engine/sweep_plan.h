@@ -1,8 +1,10 @@
 #pragma once
-// A sweep expanded into its cells (generator x size x density) and map tasks (cell x map index).
+// A sweep expanded into its cells (generator x size x density, and one per file of a map source)
+// and map tasks (cell x map index).
 // Every id here is a pure function of the config, so a task can be named in a journal, skipped on
 // resume, or assigned to a shard.
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -18,21 +20,39 @@ struct SweepCell {
   double density = 0.0;
   std::string key;  // "uniform/64x64/0.2": names the cell in records and seeds its maps
   MapSpec spec;     // the config's map options with this cell's generator, size and density
+  // Its map tasks: first_task ... first_task + maps - 1 (maps_per_cell, or a file's .scen
+  // queries).
+  std::int64_t first_task = 0;
+  int maps = 0;
+  // A map source's cell: its file (owned by the config's GeneratorEntry) and how its queries are
+  // made; size is the file's grid and density its obstacle fraction. nullptr for a generator.
+  const MapFile* file = nullptr;
+  QuerySource queries = QuerySource::endpoints;
 };
 
 struct SweepPlan {
   std::vector<SweepCell> cells;
-  int maps_per_cell = 0;
-  std::int64_t map_tasks() const { return static_cast<std::int64_t>(cells.size()) * maps_per_cell; }
-  // Map task t = cell t / maps_per_cell, map index t % maps_per_cell.
-  const SweepCell& cell_of(std::int64_t task) const { return cells[task / maps_per_cell]; }
-  int map_index_of(std::int64_t task) const { return static_cast<int>(task % maps_per_cell); }
+  std::int64_t tasks = 0;
+  std::int64_t map_tasks() const { return tasks; }
+  // The cell whose task range holds `task`.
+  const SweepCell& cell_of(std::int64_t task) const {
+    const auto it =
+        std::upper_bound(cells.begin(), cells.end(), task,
+                         [](std::int64_t t, const SweepCell& c) { return t < c.first_task; });
+    return *(it - 1);
+  }
+  int map_index_of(std::int64_t task) const {
+    return static_cast<int>(task - cell_of(task).first_task);
+  }
+  std::int64_t task_of(const SweepCell& cell, int map_index) const {
+    return cell.first_task + map_index;
+  }
 };
 
 SweepPlan plan_sweep(const SweepConfig& config);
 
 // How many maps of `cell` the planner runs: its first N (all, 0 or its scope's maps_per_cell).
-int scoped_maps(const PlannerEntry& planner, const SweepCell& cell, int maps_per_cell);
+int scoped_maps(const PlannerEntry& planner, const SweepCell& cell);
 // The runs a sweep schedules: over planners and cells, their scoped map counts.
 std::int64_t scheduled_runs(const SweepConfig& config, const SweepPlan& plan);
 

@@ -42,8 +42,7 @@ SweepResults empty_results(const SweepConfig& config) {
   res.runs.resize(static_cast<std::size_t>(tasks) * res.labels.size());
   for (auto& r : res.runs) r.metrics.fill(std::numeric_limits<double>::quiet_NaN());
   for (const auto& cell : res.plan.cells)
-    for (const auto& p : config.planners)
-      res.scoped_maps.push_back(scoped_maps(p, cell, res.plan.maps_per_cell));
+    for (const auto& p : config.planners) res.scoped_maps.push_back(scoped_maps(p, cell));
   return res;
 }
 
@@ -111,7 +110,8 @@ WorkerLaunch worker_launch(const SweepConfig& config, const IsolationOptions& is
   WorkerLaunch launch;
   launch.command = iso.command;
   if (launch.command.empty()) launch.command = {"/proc/self/exe", "worker"};
-  launch.config_line = nlohmann::json{{"config", config_as_run(config)}}.dump();
+  launch.config_line =
+      nlohmann::json{{"config", config_as_run(config)}, {"base_dir", config.base_dir}}.dump();
   launch.hard_limit_s = iso.hard_limit_s > 0 ? iso.hard_limit_s : 2.0 * config.time_limit_s + 1.0;
   return launch;
 }

@@ -20,6 +20,7 @@ METRIC_LABELS = {
     "waypoints": ("waypoints", "waypoints"),
     "max_turn_rad": ("rad", "largest turn"),
     "any_angle_ratio": ("ratio", "length / any-angle optimum"),
+    "scen_ratio": ("ratio", "length / MovingAI scenario optimum"),
     "turns": ("turns", "turns"),
     "turn_angle_rad": ("rad", "turn angle sum"),
     "smoothness_mean": ("rad / cell", "mean curvature proxy"),

@@ -10,7 +10,8 @@ packages=(g++ cmake ninja-build pkg-config git
   libcli11-dev libpcg-cpp-dev libboost-dev libnanoflann-dev python3 python3-matplotlib
   python3-plotly chromium
   libsqlite3-dev sqlite3
-  libompl-dev)
+  libompl-dev
+  libyaml-cpp-dev libpng-dev)
 scripts/apt_need.sh "${packages[@]}"
 
 jobs=$(nproc 2>/dev/null || echo 2)

@@ -16,7 +16,7 @@ check() {  # NAME COMMAND...
   fi
 }
 
-check "list --json parses and names astar and rooms" sh -c "'$bin' list --json | $py -c 'import json,sys; r=json.load(sys.stdin); assert set(r)=={\"planners\",\"generators\"}; assert any(p[\"name\"]==\"astar\" for p in r[\"planners\"]); assert all(\"params\" in p for p in r[\"planners\"] + r[\"generators\"]); g={x[\"name\"]: x for x in r[\"generators\"]}; assert [p[\"name\"] for p in g[\"rooms\"][\"params\"]]==[\"room_size\",\"door_width\"]'"
+check "list --json parses and names astar and rooms" sh -c "'$bin' list --json | $py -c 'import json,sys; r=json.load(sys.stdin); assert set(r)=={\"planners\",\"generators\",\"map_sources\"}; assert [m[\"name\"] for m in r[\"map_sources\"]]==[\"movingai\",\"image\"]; assert any(p[\"name\"]==\"astar\" for p in r[\"planners\"]); assert all(\"params\" in p for p in r[\"planners\"] + r[\"generators\"]); g={x[\"name\"]: x for x in r[\"generators\"]}; assert [p[\"name\"] for p in g[\"rooms\"][\"params\"]]==[\"room_size\",\"door_width\"]'"
 check "list prints parameters" sh -c "'$bin' list | grep -q 'corner_rule'"
 check "list prints the generators" sh -c "'$bin' list | grep -q '^rooms  -  ' && '$bin' list | grep -q 'door_width = 2'"
 check "plan --gen-param reaches the generator" sh -c "'$bin' plan --generator rooms --size 20 --density 0.2 --no-ascii --json | $py -c 'import json,sys; d=json.load(sys.stdin); assert d[\"map\"][\"params\"]=={\"door_width\":2,\"room_size\":8}' && '$bin' plan --generator rooms --size 20 --density 0.2 --gen-param room_size=4 --no-ascii --json | $py -c 'import json,sys; d=json.load(sys.stdin); assert d[\"map\"][\"params\"][\"room_size\"]==4'"

@@ -28,11 +28,14 @@ namespace {
 
 // What the OMPL objects of one run share with it: the map and test, the run's Rng (seeds of the
 // samplers allocated during the run) and the sample count. Outlives every OMPL object of the run.
+class Termination;
 struct RunContext {
   const Grid& grid;
   SightRule sight;
   Rng& rng;
+  const Termination* stop = nullptr;
   std::int64_t samples = 0;
+  bool stopped() const;
 };
 
 Point point_of(const ob::State* s) {
@@ -104,6 +107,10 @@ class SegmentValidity final : public ob::MotionValidator {
   SegmentValidity(const ob::SpaceInformationPtr& si, const RunContext& run)
       : ob::MotionValidator(si), run_(run) {}
   bool checkMotion(const ob::State* s1, const ob::State* s2) const override {
+    // After the deadline every motion is refused untested: the run ends as limit anyway, and
+    // loops that do not evaluate the termination condition (LazyPRM's solution construction
+    // removes invalid edges until start and goal part) end quickly.
+    if (run_.stopped()) return false;
     if (segment_free(run_.grid, point_of(s1), point_of(s2), run_.sight)) {
       ++valid_;
       return true;
@@ -158,6 +165,8 @@ class Termination {
   long long evaluations_ = 0;
   bool expired_ = false;
 };
+
+bool RunContext::stopped() const { return stop != nullptr && stop->expired(); }
 
 // OMPL's console is silenced once per process: a sweep would print every planner's set-up lines.
 void silence_ompl() {
@@ -220,6 +229,7 @@ class OmplPlanner final : public Planner {
     const bool roadmap = entry_.driver == OmplDriver::roadmap;
     Termination stop(request.deadline,
                      roadmap ? std::numeric_limits<long long>::max() : options_.max_iterations);
+    run.stop = &stop;
     ob::PathPtr path;
     double milestones = 0.0;
     {

@@ -63,7 +63,8 @@ void run_case(benchmark::State& state, const Case& c, const Planner& planner) {
     for (std::size_t i = 0; i < c.maps.size(); ++i) {
       const MapInstance& m = c.maps[i];
       Rng rng(7, i);
-      const PlanResult r = plan_checked(planner, PlanRequest{m.grid, m.start, m.goal, rng, scratch});
+      const PlanResult r =
+          plan_checked(planner, PlanRequest{m.grid, m.start, m.goal, rng, scratch});
       samples += r.work.samples.value_or(0);
       if (r.ok()) {
         ++successes;

@@ -204,10 +204,16 @@ class RoadmapPrm final : public og::PRM {
       if (first_solution && !stop.expired() && maybeConstructSolution(startM_, goalM_, path)) break;
     }
     si_->freeState(work);
+    grown_ = milestoneCount() - first;
     if (stop.expired()) return nullptr;
     if (!first_solution) maybeConstructSolution(startM_, goalM_, path);  // the best, if any
     return path;
   }
+  // Milestones the last grow() added besides start and goal.
+  unsigned long grown() const { return grown_; }
+
+ private:
+  unsigned long grown_ = 0;
 };
 
 class OmplPlanner final : public Planner {
@@ -231,7 +237,7 @@ class OmplPlanner final : public Planner {
                      roadmap ? std::numeric_limits<long long>::max() : options_.max_iterations);
     run.stop = &stop;
     ob::PathPtr path;
-    double milestones = 0.0;
+    double grown = 0.0;  // roadmap: milestones grown (start and goal not counted)
     {
       PhaseTimer timer(result, "search");
       auto space = std::make_shared<GridSpace>(run);
@@ -259,7 +265,7 @@ class OmplPlanner final : public Planner {
         if (entry_.configure != nullptr) entry_.configure(*prm, options_);
         prm->setup();
         path = prm->grow(options_.samples, entry_.first_solution, stop);
-        milestones = static_cast<double>(prm->milestoneCount());
+        grown = static_cast<double>(prm->grown());
       } else {
         ob::PlannerPtr planner = entry_.make(si, seed);
         planner->setProblemDefinition(problem);
@@ -275,10 +281,9 @@ class OmplPlanner final : public Planner {
           result.path.push_back(point_of(state));
     }
     result.work.samples = run.samples;
-    if (roadmap)
-      result.extra.emplace_back("roadmap_milestones", milestones);
-    else
-      result.extra.emplace_back("iterations", static_cast<double>(stop.evaluations()));
+    // Iterations: of the roadmap's growth loop (one milestone each), or of the planner's main loop.
+    result.extra.emplace_back("iterations",
+                              roadmap ? grown : static_cast<double>(stop.evaluations()));
     if (stop.expired()) {
       result.path.clear();
       result.failure = Failure::limit;

@@ -28,11 +28,14 @@ namespace {
 
 // What the OMPL objects of one run share with it: the map and test, the run's Rng (seeds of the
 // samplers allocated during the run) and the sample count. Outlives every OMPL object of the run.
+class Termination;
 struct RunContext {
   const Grid& grid;
   SightRule sight;
   Rng& rng;
+  const Termination* stop = nullptr;
   std::int64_t samples = 0;
+  bool stopped() const;
 };
 
 Point point_of(const ob::State* s) {
@@ -104,6 +107,10 @@ class SegmentValidity final : public ob::MotionValidator {
   SegmentValidity(const ob::SpaceInformationPtr& si, const RunContext& run)
       : ob::MotionValidator(si), run_(run) {}
   bool checkMotion(const ob::State* s1, const ob::State* s2) const override {
+    // After the deadline every motion is refused untested: the run ends as limit anyway, and
+    // loops that do not evaluate the termination condition (LazyPRM's solution construction
+    // removes invalid edges until start and goal part) end quickly.
+    if (run_.stopped()) return false;
     if (segment_free(run_.grid, point_of(s1), point_of(s2), run_.sight)) {
       ++valid_;
       return true;
@@ -159,6 +166,8 @@ class Termination {
   bool expired_ = false;
 };
 
+bool RunContext::stopped() const { return stop != nullptr && stop->expired(); }
+
 // OMPL's console is silenced once per process: a sweep would print every planner's set-up lines.
 void silence_ompl() {
   static std::once_flag once;
@@ -195,10 +204,16 @@ class RoadmapPrm final : public og::PRM {
       if (first_solution && !stop.expired() && maybeConstructSolution(startM_, goalM_, path)) break;
     }
     si_->freeState(work);
+    grown_ = milestoneCount() - first;
     if (stop.expired()) return nullptr;
     if (!first_solution) maybeConstructSolution(startM_, goalM_, path);  // the best, if any
     return path;
   }
+  // Milestones the last grow() added besides start and goal.
+  unsigned long grown() const { return grown_; }
+
+ private:
+  unsigned long grown_ = 0;
 };
 
 class OmplPlanner final : public Planner {
@@ -220,8 +235,9 @@ class OmplPlanner final : public Planner {
     const bool roadmap = entry_.driver == OmplDriver::roadmap;
     Termination stop(request.deadline,
                      roadmap ? std::numeric_limits<long long>::max() : options_.max_iterations);
+    run.stop = &stop;
     ob::PathPtr path;
-    double milestones = 0.0;
+    double grown = 0.0;  // roadmap: milestones grown (start and goal not counted)
     {
       PhaseTimer timer(result, "search");
       auto space = std::make_shared<GridSpace>(run);
@@ -249,7 +265,7 @@ class OmplPlanner final : public Planner {
         if (entry_.configure != nullptr) entry_.configure(*prm, options_);
         prm->setup();
         path = prm->grow(options_.samples, entry_.first_solution, stop);
-        milestones = static_cast<double>(prm->milestoneCount());
+        grown = static_cast<double>(prm->grown());
       } else {
         ob::PlannerPtr planner = entry_.make(si, seed);
         planner->setProblemDefinition(problem);
@@ -265,10 +281,9 @@ class OmplPlanner final : public Planner {
           result.path.push_back(point_of(state));
     }
     result.work.samples = run.samples;
-    if (roadmap)
-      result.extra.emplace_back("roadmap_milestones", milestones);
-    else
-      result.extra.emplace_back("iterations", static_cast<double>(stop.evaluations()));
+    // Iterations: of the roadmap's growth loop (one milestone each), or of the planner's main loop.
+    result.extra.emplace_back("iterations",
+                              roadmap ? grown : static_cast<double>(stop.evaluations()));
     if (stop.expired()) {
       result.path.clear();
       result.failure = Failure::limit;

@@ -333,16 +333,18 @@ TEST_P(PlannerContract, DeadlineExpiringMidPlanGivesLimitPromptly) {
   EXPECT_EQ(checked, kMidPlanMaps);
 }
 
-// The planner's parameters for a long plan: every budget large and, for a path planner, its most
-// expensive shortcut and a curve, so that every phase it has does real work.
+// The planner's parameters for a long plan: every budget large (within its range) and, for a path
+// planner, its most expensive shortcut and a curve, so that every phase it has does real work.
 nlohmann::json long_plan_params(const PlannerInfo& info) {
   nlohmann::json params = nlohmann::json::object();
   for (const ParamSpec& spec : info.params) {
     const auto has = [&](const char* choice) {
       return std::find(spec.choices.begin(), spec.choices.end(), choice) != spec.choices.end();
     };
-    if (spec.name == "samples") params["samples"] = 20000;
-    if (spec.name == "max_iterations") params["max_iterations"] = 50000;
+    // Within the declared range (LazyPRM*'s budget stops at 5000).
+    const auto large = [&](double n) { return static_cast<long long>(std::min(n, spec.max)); };
+    if (spec.name == "samples") params["samples"] = large(20000);
+    if (spec.name == "max_iterations") params["max_iterations"] = large(50000);
     if (spec.name == "step") params["step"] = 0.5;
     if (info.kind == PlannerKind::local) continue;  // a fusion's `smoothing` is its DWA's
     if (spec.name == "shortcut" && has("greedy")) params["shortcut"] = "greedy";

@@ -509,8 +509,8 @@ void check_results_db(const std::string& path, const std::string& option) {
 
 void read_run_messages(const std::string& journal, const SweepResults& results,
                        RunMessages& messages) {
-  std::map<std::string, int> cells;
-  for (const auto& c : results.plan.cells) cells[c.key] = c.index;
+  std::map<std::string, const SweepCell*> cells;
+  for (const auto& c : results.plan.cells) cells[c.key] = &c;
   std::map<std::string, std::size_t> planners;
   for (std::size_t p = 0; p < results.labels.size(); ++p) planners[results.labels[p]] = p;
   std::ifstream in(journal, std::ios::binary);
@@ -523,8 +523,7 @@ void read_run_messages(const std::string& journal, const SweepResults& results,
     const auto cell = cells.find(rec.value("cell", std::string()));
     const auto planner = planners.find(rec.value("planner", std::string()));
     if (cell == cells.end() || planner == planners.end()) continue;
-    const std::int64_t task = static_cast<std::int64_t>(cell->second) * results.plan.maps_per_cell +
-                              rec.value("map_index", 0);
+    const std::int64_t task = results.plan.task_of(*cell->second, rec.value("map_index", 0));
     messages.emplace(std::make_pair(task, planner->second), rec.at("message").get<std::string>());
   }
 }

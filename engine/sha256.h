@@ -1,6 +1,7 @@
 #pragma once
-// SHA-256 (FIPS 180-4) of a byte string, as 64 lowercase hex digits: the content hash a report
-// keeps of every plugin it ran (engine/plugins.h), so a resumed sweep knows the same code runs.
+// SHA-256 of a byte string (OpenSSL's libcrypto), as 64 lowercase hex digits: the content hash a
+// report keeps of every plugin it ran (engine/plugins.h), so a resumed sweep knows the same code
+// runs.
 
 #include <string>
 #include <string_view>

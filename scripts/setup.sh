@@ -9,7 +9,7 @@ packages=(g++ cmake ninja-build pkg-config git
   libeigen3-dev libtbb-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev
   libcli11-dev libpcg-cpp-dev libboost-dev libnanoflann-dev python3 python3-matplotlib
   python3-plotly chromium
-  libsqlite3-dev sqlite3
+  libsqlite3-dev sqlite3 libssl-dev
   libompl-dev
   libyaml-cpp-dev libpng-dev)
 scripts/apt_need.sh "${packages[@]}"

@@ -138,8 +138,8 @@ check "--version: version, git revision, compiler" sh -c "'$bin' --version | gre
 check "list astar: that planner only" sh -c "'$bin' list astar >l.txt && grep -q '^astar  -  ' l.txt && ! grep -q '^dijkstra  -  ' l.txt && ! grep -q '^generators' l.txt"
 check "list astar rooms --json" sh -c "'$bin' list astar rooms --json | $py -c 'import json,sys; d=json.load(sys.stdin); assert [p[\"name\"] for p in d[\"planners\"]]==[\"astar\"] and [g[\"name\"] for g in d[\"generators\"]]==[\"rooms\"]'"
 expect_exit "list nosuch: exit 2" 2 "$bin" list astar nosuch
-check "... naming it" grep -q '"nosuch" is neither a planner nor a generator' last.err
-check "list --brief: one line per planner and generator" sh -c "test \$('$bin' list --brief | wc -l) = \$('$bin' list --json | $py -c 'import json,sys; d=json.load(sys.stdin); print(len(d[\"planners\"]) + len(d[\"generators\"]))')"
+check "... naming it" grep -q '"nosuch" is neither a planner, a generator nor a map source' last.err
+check "list --brief: one line per planner, generator and map source" sh -c "test \$('$bin' list --brief | wc -l) = \$('$bin' list --json | $py -c 'import json,sys; d=json.load(sys.stdin); print(len(d[\"planners\"]) + len(d[\"generators\"]) + len(d[\"map_sources\"]))')"
 check "summary table names µs" sh -c "'$bin' run tiny.json --out t3.json | grep -q 'median µs'"
 
 finish cli_export_compare

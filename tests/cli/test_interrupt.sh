@@ -15,11 +15,11 @@ source "$(dirname "$0")/lib.sh"
 isolate=(--isolate ${AGV_ISOLATE_MEMORY_MB:+--isolate-memory "$AGV_ISOLATE_MEMORY_MB"})
 
 cat >config.json <<'JSON'
-{"name": "interrupt-test", "seed": 5, "generators": ["uniform", "rooms"], "sizes": [48, 64],
- "densities": [0.1, 0.3], "maps_per_cell": 60, "planners": ["astar", "dijkstra", "bidir_astar"],
+{"name": "interrupt-test", "seed": 5, "generators": ["uniform", "rooms"], "sizes": [96, 128],
+ "densities": [0.1, 0.3], "maps_per_cell": 100, "planners": ["astar", "dijkstra", "bidir_astar"],
  "report": "unused.json"}
 JSON
-total=$((2 * 2 * 2 * 60 * 3))
+total=$((2 * 2 * 2 * 100 * 3))
 
 # Every record once; no record says the run crashed or hit the hard limit.
 cat >journal_ok.py <<'EOF_PY'

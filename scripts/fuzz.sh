@@ -16,10 +16,9 @@ targets=(${FUZZ_TARGETS:-fuzz_map fuzz_scen fuzz_config})
 rss_mb=${FUZZ_RSS_MB:-2048}
 
 scripts/apt_need.sh clang libclang-rt-14-dev cmake ninja-build
-source scripts/ccache_env.sh
 jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DAGVBENCH_FUZZ=ON -DAGVBENCH_BUILD_PERF=OFF "${ccache_launcher[@]}" >/dev/null
+  -DAGVBENCH_FUZZ=ON -DAGVBENCH_BUILD_PERF=OFF >/dev/null
 cmake --build build-fuzz -j "$jobs" --target "${targets[@]}"
 
 mkdir -p build-fuzz/findings

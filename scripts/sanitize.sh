@@ -13,15 +13,13 @@ parts=("$@")
 ((${#parts[@]})) || parts=(asan tsan)
 jobs=${SANITIZE_JOBS:-$(nproc 2>/dev/null || echo 2)}
 scripts/apt_need.sh cmake ninja-build g++
-source scripts/ccache_env.sh
-
 # -O1 -g1: the optimisation the sanitizers' own docs suggest, and line tables only (file:line
 # in every report's stack, no variable info): the build is the CI's longest stage, and full -g
 # makes the sanitized objects twice as large for nothing a report prints.
 configure() {  # DIR SANITIZERS [CMAKE ARGS...]
   cmake -S . -B "$1" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DAGVBENCH_SANITIZE="$2" \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-    -DAGVBENCH_BUILD_PERF=OFF -DAGVBENCH_NATIVE=OFF "${ccache_launcher[@]}" "${@:3}" >/dev/null
+    -DAGVBENCH_BUILD_PERF=OFF -DAGVBENCH_NATIVE=OFF "${@:3}" >/dev/null
 }
 
 # TSan sees only the synchronisation of code it instrumented. Debian's libtbb is not, so every

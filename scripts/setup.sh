@@ -14,10 +14,8 @@ packages=(g++ cmake ninja-build pkg-config git
   libyaml-cpp-dev libpng-dev)
 scripts/apt_need.sh "${packages[@]}"
 
-source scripts/ccache_env.sh
-
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${ccache_launcher[@]}" >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 if (($#)); then
   cmake --build build -j "$jobs" --target "$@"
 else

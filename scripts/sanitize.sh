@@ -13,6 +13,7 @@ parts=("$@")
 ((${#parts[@]})) || parts=(asan tsan)
 jobs=${SANITIZE_JOBS:-$(nproc 2>/dev/null || echo 2)}
 scripts/apt_need.sh cmake ninja-build g++
+
 # -O1 -g1: the optimisation the sanitizers' own docs suggest, and line tables only (file:line
 # in every report's stack, no variable info): the build is the CI's longest stage, and full -g
 # makes the sanitized objects twice as large for nothing a report prints.

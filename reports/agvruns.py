@@ -36,6 +36,42 @@ class Runs:
         return [r[1] for r in self.by.get(cell, {}).get(planner, [])]
 
 
+def _check_version(r, n):
+    tool, version = r.get("tool"), r.get("journal_version")
+    if tool != "agvbench" or version != JOURNAL_VERSION:
+        raise ReportError(f"line {n}: a record of tool {tool!r}, journal_version {version!r}; "
+                          f"this script reads tool 'agvbench', journal_version {JOURNAL_VERSION} "
+                          "(reports/SCHEMA.md, Per-run records)")
+
+
+def journal_records(path):
+    """Yield (line number, record) for each record of RUNS.jsonl, each checked to be an agvbench
+    journal record of this version with the keys every reader needs. Raises ReportError naming
+    the line; OSError and UnicodeDecodeError pass through to the caller."""
+    with open(path, "r", encoding="utf-8") as f:
+        for n, line in enumerate(f, 1):
+            line = line.strip()
+            if not line:
+                continue
+            try:
+                r = json.loads(line)
+            except json.JSONDecodeError as e:
+                raise ReportError(f"line {n}: not valid JSON: {e.msg}") from None
+            if not isinstance(r, dict):
+                raise ReportError(f"line {n}: expected a JSON object (an agvbench --runs-out record)")
+            # A record that names its tool or version is judged by them first (another version's
+            # keys may differ); one that names neither, by its keys.
+            if "tool" in r or "journal_version" in r:
+                _check_version(r, n)
+            for key in ("planner", "cell", "map_index", "outcome", "metrics"):
+                if key not in r:
+                    raise ReportError(f"line {n}: missing key '{key}' (not an agvbench --runs-out record)")
+            _check_version(r, n)
+            if not isinstance(r["metrics"], dict):
+                raise ReportError(f"line {n}.metrics: expected an object")
+            yield n, r
+
+
 def load_runs(path, doc):
     """Read RUNS.jsonl; every record must be an agvbench journal record of this version whose
     cell and planner are in the report `doc` (a journal of another sweep is refused)."""
@@ -45,36 +81,17 @@ def load_runs(path, doc):
     planners = {p["planner"] for c in doc["cells"] for p in c["planners"]}
     runs = Runs(path)
     try:
-        with open(path, "r", encoding="utf-8") as f:
-            for n, line in enumerate(f, 1):
-                line = line.strip()
-                if not line:
-                    continue
-                try:
-                    r = json.loads(line)
-                except json.JSONDecodeError as e:
-                    raise ReportError(f"line {n}: not valid JSON: {e.msg}") from None
-                if not isinstance(r, dict):
-                    raise ReportError(f"line {n}: expected a JSON object (an agvbench --runs-out record)")
-                tool, version = r.get("tool"), r.get("journal_version")
-                if tool != "agvbench" or version != JOURNAL_VERSION:
-                    raise ReportError(f"line {n}: a record of tool {tool!r}, journal_version {version!r}; "
-                                      f"these scripts read tool 'agvbench', journal_version {JOURNAL_VERSION}")
-                for key in ("planner", "cell", "map_index", "outcome", "metrics"):
-                    if key not in r:
-                        raise ReportError(f"line {n}: missing key '{key}'")
-                if not isinstance(r["metrics"], dict):
-                    raise ReportError(f"line {n}.metrics: expected an object")
-                if r["cell"] not in cells:
-                    raise ReportError(f"line {n}: cell {r['cell']!r} is not in the report "
-                                      "(the journal of another sweep?)")
-                if r["planner"] not in planners:
-                    raise ReportError(f"line {n}: planner {r['planner']!r} is not in the report "
-                                      "(the journal of another sweep?)")
-                t = (r.get("timing") or {}).get("plan_time_ns") if isinstance(r.get("timing"), dict) else None
-                runs.by.setdefault(r["cell"], {}).setdefault(r["planner"], []).append(
-                    (r["map_index"], r["outcome"], r["metrics"], t))
-                runs.count += 1
+        for n, r in journal_records(path):
+            if r["cell"] not in cells:
+                raise ReportError(f"line {n}: cell {r['cell']!r} is not in the report "
+                                  "(the journal of another sweep?)")
+            if r["planner"] not in planners:
+                raise ReportError(f"line {n}: planner {r['planner']!r} is not in the report "
+                                  "(the journal of another sweep?)")
+            t = (r.get("timing") or {}).get("plan_time_ns") if isinstance(r.get("timing"), dict) else None
+            runs.by.setdefault(r["cell"], {}).setdefault(r["planner"], []).append(
+                (r["map_index"], r["outcome"], r["metrics"], t))
+            runs.count += 1
     except FileNotFoundError:
         raise ReportError("no such file") from None
     except IsADirectoryError:

@@ -70,11 +70,11 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 _here = os.path.dirname(os.path.abspath(__file__))
 sys.path[:] = [p for p in sys.path if os.path.abspath(p or ".") != _here] + [_here]
 import agvreport  # noqa: E402
+import agvruns  # noqa: E402
 from agvreport import Moments, ReportError, moments_from_summary  # noqa: E402
 
 DASH = "\u2013"
 # The per-run record format agvbench writes (engine/run_record.h kJournalVersion).
-JOURNAL_VERSION = 1
 REPRODUCED, DIRECTION, CONTRADICTED, NOT_SIGNIFICANT, NA = (
     "reproduced", "direction only", "contradicted", "not significant", "not comparable")
 LEVELS = (REPRODUCED, DIRECTION, CONTRADICTED, NOT_SIGNIFICANT, NA)
@@ -119,27 +119,11 @@ class Source:
     def attach_runs(self, path):
         records = []
         try:
-            with open(path, "r", encoding="utf-8") as f:
-                for n, line in enumerate(f, 1):
-                    line = line.strip()
-                    if not line:
-                        continue
-                    try:
-                        r = json.loads(line)
-                    except json.JSONDecodeError as e:
-                        raise ReportError(f"line {n}: not valid JSON: {e.msg}") from None
-                    for key in ("planner", "cell", "map_index", "outcome", "metrics"):
-                        if not isinstance(r, dict) or key not in r:
-                            raise ReportError(f"line {n}: missing key '{key}' (not an agvbench --runs-out record)")
-                    tool, version = r.get("tool"), r.get("journal_version")
-                    if tool != "agvbench" or version != JOURNAL_VERSION:
-                        raise ReportError(f"line {n}: a record of tool {tool!r}, journal_version {version!r}; "
-                                          f"this script reads tool 'agvbench', journal_version {JOURNAL_VERSION} "
-                                          "(reports/SCHEMA.md, Per-run records)")
-                    # Keep only what the comparisons read (paper sweeps have many records).
-                    records.append({"planner": r["planner"], "cell": r["cell"], "map_index": r["map_index"],
-                                    "outcome": r["outcome"], "metrics": r["metrics"],
-                                    "timing": {"plan_time_ns": (r.get("timing") or {}).get("plan_time_ns")}})
+            for _, r in agvruns.journal_records(path):
+                # Keep only what the comparisons read (paper sweeps have many records).
+                records.append({"planner": r["planner"], "cell": r["cell"], "map_index": r["map_index"],
+                                "outcome": r["outcome"], "metrics": r["metrics"],
+                                "timing": {"plan_time_ns": (r.get("timing") or {}).get("plan_time_ns")}})
         except OSError as e:
             raise ReportError(f"cannot read: {e.strerror}") from None
         self.runs_path = path

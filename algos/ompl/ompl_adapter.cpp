@@ -259,6 +259,7 @@ class OmplPlanner final : public Planner {
       problem->setOptimizationObjective(objective);
 
       const std::uint32_t seed = request.rng.next_u32();
+      ob::PlannerPtr planner;
       if (roadmap) {
         auto prm = std::make_shared<RoadmapPrm>(si, !entry_.first_solution, seed);
         prm->setProblemDefinition(problem);
@@ -267,7 +268,7 @@ class OmplPlanner final : public Planner {
         path = prm->grow(options_.samples, entry_.first_solution, stop);
         grown = static_cast<double>(prm->grown());
       } else {
-        ob::PlannerPtr planner = entry_.make(si, seed);
+        planner = entry_.make(si, seed);
         planner->setProblemDefinition(problem);
         if (entry_.configure != nullptr) entry_.configure(*planner, options_);
         planner->setup();
@@ -279,6 +280,10 @@ class OmplPlanner final : public Planner {
       if (path != nullptr && !stop.expired())
         for (const ob::State* state : path->as<og::PathGeometric>()->getStates())
           result.path.push_back(point_of(state));
+      // OMPL 1.5's LazyPRM frees its roadmap's states in clear() but not in its destructor
+      // (ompl/ompl#833, fixed in 1.6 by ompl/ompl#909): without this every ompl_lazyprmstar run
+      // leaks its milestones. The path's points are copied above; clear() is harmless for the rest.
+      if (planner != nullptr) planner->clear();
     }
     result.work.samples = run.samples;
     // Iterations: of the roadmap's growth loop (one milestone each), or of the planner's main loop.

@@ -1,5 +1,8 @@
 # Shared by the CLI test scripts (sourced): a scratch folder to work in, removed on exit, and
 # pass/fail bookkeeping. `finish NAME` prints the tally and returns non-zero on any failure.
+# `"${isolate[@]}"` is --isolate as a sanitized build can run it: sanitizers reserve terabytes of
+# address space for their shadow memory, more than the workers' default cap (RLIMIT_AS) allows,
+# so a sanitized build's ctest sets AGV_ISOLATE_MEMORY_MB (tests/CMakeLists.txt).
 py=/usr/bin/python3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -8,6 +11,7 @@ pass=0
 fail=0
 ok() { echo "ok   $1"; pass=$((pass + 1)); }
 bad() { echo "FAIL $1"; fail=$((fail + 1)); }
+isolate=(--isolate ${AGV_ISOLATE_MEMORY_MB:+--isolate-memory "$AGV_ISOLATE_MEMORY_MB"})
 finish() {
   echo "$1: $pass passed, $fail failed"
   [ "$fail" -eq 0 ]

@@ -10,9 +10,6 @@ bin=$1
 src=$2
 same=$src/slurm/same_report.py
 source "$(dirname "$0")/lib.sh"
-# A sanitized build reserves terabytes of address space for its shadow memory, more than the
-# workers' default cap allows: its ctest sets AGV_ISOLATE_MEMORY_MB (tests/CMakeLists.txt).
-isolate=(--isolate ${AGV_ISOLATE_MEMORY_MB:+--isolate-memory "$AGV_ISOLATE_MEMORY_MB"})
 
 cat >config.json <<'JSON'
 {"name": "interrupt-test", "seed": 5, "generators": ["uniform", "rooms"], "sizes": [96, 128],

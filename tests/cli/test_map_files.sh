@@ -75,7 +75,7 @@ $py "$same" full.json resumed.json >/dev/null && ok "resumed report equals the s
   bad "resumed report differs: $($py "$same" full.json resumed.json)"
 [ "$(wc -l <part.jsonl)" -eq "$expected" ] && ok "resumed journal holds each run once" || bad "resumed journal: $(wc -l <part.jsonl) lines"
 
-"$bin" run sweep/config.json --threads 2 --isolate --out isolated.json --quiet
+"$bin" run sweep/config.json --threads 2 "${isolate[@]}" --out isolated.json --quiet
 code=$?
 [ $code -eq 0 ] && $py "$same" full.json isolated.json >/dev/null && ok "--isolate gives the same report" ||
   bad "--isolate: exit $code, $($py "$same" full.json isolated.json 2>&1)"

@@ -15,7 +15,6 @@ build=$2
 src=$3
 same=$src/slurm/same_report.py
 source "$(dirname "$0")/lib.sh"
-isolate=(--isolate ${AGV_ISOLATE_MEMORY_MB:+--isolate-memory "$AGV_ISOLATE_MEMORY_MB"})
 # The plugins are built with agvbench's own compiler (the loader insists on the same toolchain),
 # through its compiler launcher (ccache) when it has one.
 cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt"; }

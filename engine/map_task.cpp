@@ -101,6 +101,7 @@ MapSlot run_map_task(const MapTaskContext& context, std::int64_t task,
   // Shared by the task's runs: the optimal lengths are computed once per corner rule.
   MapReference ref(*map.grid, map.start, map.goal, context.config.collision);
   if (map.scen_optimum >= 0.0) ref.set_scenario_optimum(map.scen_optimum);
+  if (!context.config.any_angle_reference) ref.skip_any_angle();
   for (const std::size_t p : planners) {
     const PlannerEntry& entry = context.config.planners.at(p);
     Rng rng = run_rng(context.config.seed, cell, map_index, entry.label);

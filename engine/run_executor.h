@@ -68,6 +68,11 @@ class MapReference {
   // The any-angle optimum under the model's rule (core/any_angle.h), computed once: a lower
   // bound of every path valid under the model (its clearance only removes paths).
   std::optional<double> any_angle_length(Scratch& scratch);
+  // The sweep does without the any-angle reference: any_angle_length is nullopt, never computed.
+  void skip_any_angle() {
+    any_angle_known_ = true;
+    any_angle_.reset();
+  }
   // A MovingAI scenario's optimal length for this query (a map source's .scen query).
   void set_scenario_optimum(double length) { scenario_optimum_ = length; }
   // The scenario's optimum where the model is the scenario's convention (MovingAI: no corner

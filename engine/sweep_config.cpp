@@ -544,6 +544,11 @@ SweepConfig parse_config(const json& j, const std::string& base_dir) {
     c.motion.turn_speed_radps = m.number("turn_speed_radps", c.motion.turn_speed_radps, 1e-6, 1e6);
     m.finish();
   }
+  {
+    ObjectReader refs(optional_object(r, "references"), "references.");
+    c.any_angle_reference = refs.boolean("any_angle", true);
+    refs.finish();
+  }
   c.threads = static_cast<int>(r.integer("threads", 0, kThreadsRange));
   c.report_path = r.string("report", c.report_path);
   c.runs_path = r.string("runs", c.runs_path);
@@ -704,10 +709,11 @@ json config_fields(const SweepConfig& c) {
 }  // namespace
 
 // The fields above, plus what only some configs have, written only when present so that the
-// other configs keep their hash (and journals): fixed endpoints' cells, the "sources" commentary
-// and the plugins that ran.
+// other configs keep their hash (and journals): fixed endpoints' cells, a reference left out,
+// the "sources" commentary and the plugins that ran.
 json config_as_run(const SweepConfig& c) {
   json out = config_fields(c);
+  if (!c.any_angle_reference) out["references"] = {{"any_angle", false}};
   if (c.map.endpoints == EndpointMode::fixed) {
     out["map"]["start"] = {c.map.start.x, c.map.start.y};
     out["map"]["goal"] = {c.map.goal.x, c.map.goal.y};

@@ -94,6 +94,10 @@ struct SweepConfig {
   std::string baseline;        // planner label the paired comparisons use
   double time_limit_s = 10.0;  // per run, cooperative
   MotionTimeParams motion;
+  // "references": {"any_angle": false} leaves out the any-angle reference (any_angle_ratio is
+  // then null): on whole benchmark maps it costs more than the runs it judges (docs/METRICS.md
+  // "any_angle_ratio").
+  bool any_angle_reference = true;
   // "sources": free text saying where each value comes from (a paper's section or table);
   // echoed in the report's config, not part of the config hash. Empty = none given.
   nlohmann::json sources = nlohmann::json::object();

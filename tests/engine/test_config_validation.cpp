@@ -158,7 +158,7 @@ TEST(ConfigValidation, DuplicateAxisValuesAreRefused) {
 // Class 6: an optional object left out and one written empty give the same config.
 TEST(ConfigValidation, AbsentAndEmptyObjectsGiveOneDefault) {
   const json absent = config_as_run(parse_config(kSmall));
-  for (const char* key : {"map", "collision", "motion"}) {
+  for (const char* key : {"map", "collision", "motion", "references"}) {
     json j = kSmall;
     j[key] = json::object();
     EXPECT_EQ(config_as_run(parse_config(j)), absent) << key;
@@ -168,6 +168,29 @@ TEST(ConfigValidation, AbsentAndEmptyObjectsGiveOneDefault) {
   j["planners"] = {{{"name", "astar"}, {"params", json::object()}, {"only", json::object()}}};
   j["generators"] = {{{"name", "uniform"}, {"params", json::object()}}};
   EXPECT_EQ(config_as_run(parse_config(j)), absent);
+}
+
+// "references": {"any_angle": false} is another sweep (its hash and config as run say so); true
+// is the default and leaves the hash of every config written before the option alone.
+TEST(ConfigValidation, AnyAngleReferenceCanBeLeftOut) {
+  const SweepConfig plain = parse_config(kSmall);
+  EXPECT_TRUE(plain.any_angle_reference);
+  EXPECT_FALSE(config_as_run(plain).contains("references"));
+  json j = kSmall;
+  j["references"] = {{"any_angle", true}};
+  EXPECT_EQ(config_hash(parse_config(j)), config_hash(plain));
+  j["references"] = {{"any_angle", false}};
+  const SweepConfig off = parse_config(j);
+  EXPECT_FALSE(off.any_angle_reference);
+  EXPECT_EQ(config_as_run(off)["references"], json({{"any_angle", false}}));
+  EXPECT_NE(config_hash(off), config_hash(plain));
+  // The config as run reads back as the same sweep (journals, isolated workers, merge).
+  EXPECT_EQ(config_hash(parse_config(config_as_run(off))), config_hash(off));
+  j["references"] = {{"any_angle", "no"}};
+  EXPECT_NE(config_error(j).find("references.any_angle: expected true or false"), std::string::npos)
+      << config_error(j);
+  j["references"] = {{"optimal", false}};
+  EXPECT_NE(config_error(j).find("references.optimal"), std::string::npos) << config_error(j);
 }
 
 // Integers past 2^63 - 1 are refused as written (nlohmann holds them unsigned; read as long long

@@ -43,7 +43,7 @@ import agvruns  # noqa: E402
 from agvreport import ReportError, density_text  # noqa: E402
 from plot_report import (METRIC_LABELS, TIME, Report, finite, metric_title, nan_or,  # noqa: E402
                          split_list)
-from plot_style import (Saver, log_ticks_both_ends, note_below_legend, setup_matplotlib,  # noqa: E402
+from plot_style import (Saver, log_ticks_both_ends, note_below_legend, panel_grid, setup_matplotlib,  # noqa: E402
                         side_legend, spaced_ticks)
 
 FORMATS = ("png", "pdf", "svg")
@@ -278,39 +278,35 @@ def plot_paired(plt, saver, rep, key):
 
 def plot_success(plt, saver, rep):
     gens, sizes = rep.generators, rep.sizes
-    fig, axes = plt.subplots(len(gens), len(sizes), figsize=(3.4 * len(sizes) + 0.4, 3.0 * len(gens) + 0.6),
-                             squeeze=False, sharey=True)
+    present = [(gi, si) for gi, g in enumerate(gens) for si, (w, h) in enumerate(sizes)
+               if rep.worlds.get((g, w, h))]
+    fig, panels = panel_grid(plt, len(gens), len(sizes), present, 3.4, 3.0, sharey=True)
     lows = []
-    for gi, g in enumerate(gens):
-        for si, (w, h) in enumerate(sizes):
-            ax = axes[gi][si]
-            cells = rep.worlds.get((g, w, h))
-            ax.set_title(f"{g} {w}\u00d7{h}")
-            if not cells:
-                ax.set_visible(False)
-                continue
-            ds = sorted(cells)
-            labels = rep.present(cells.values())
-            for label in labels:
-                xs, ys, los, his = [], [], [], []
-                for d in ds:
-                    p = rep.planner(cells[d], label)
-                    if p is None or not p.get("runs"):
-                        continue
-                    ci = p.get("success_ci95") or [None, None]
-                    xs.append(d); ys.append(100.0 * p["successes"] / p["runs"])
-                    los.append(nan_or(ci[0]) * 100); his.append(nan_or(ci[1]) * 100)
-                if xs:
-                    draw_series(ax, rep, label, xs, ys, los, his, band=False,
-                                dodge=dodge_of(labels, label, ds))
-                    lows += los
-            density_axis(ax, ds)
-            ax.set_xlabel("obstacle density")
-            if si == 0:
-                ax.set_ylabel("success %")
-    for row in axes:
-        for ax in row:
-            success_ylim(ax, lows)
+    for gi, si, ax, left, _ in panels:
+        g, (w, h) = gens[gi], sizes[si]
+        cells = rep.worlds[(g, w, h)]
+        ax.set_title(f"{g} {w}\u00d7{h}")
+        ds = sorted(cells)
+        labels = rep.present(cells.values())
+        for label in labels:
+            xs, ys, los, his = [], [], [], []
+            for d in ds:
+                p = rep.planner(cells[d], label)
+                if p is None or not p.get("runs"):
+                    continue
+                ci = p.get("success_ci95") or [None, None]
+                xs.append(d); ys.append(100.0 * p["successes"] / p["runs"])
+                los.append(nan_or(ci[0]) * 100); his.append(nan_or(ci[1]) * 100)
+            if xs:
+                draw_series(ax, rep, label, xs, ys, los, his, band=False,
+                            dodge=dodge_of(labels, label, ds))
+                lows += los
+        density_axis(ax, ds)
+        ax.set_xlabel("obstacle density")
+        if left:
+            ax.set_ylabel("success %")
+    for _, _, ax, _, _ in panels:
+        success_ylim(ax, lows)
     finish(fig, rep, rep.labels, "success rate vs obstacle density (bars: Wilson 95% interval)",
            "success", saver)
 
@@ -319,43 +315,47 @@ def plot_time(plt, saver, rep):
     if not rep.has_time() or not rep.wanted(TIME):
         return
     gens, ds = rep.generators, rep.densities
-    fig, axes = plt.subplots(len(gens), len(ds), figsize=(3.1 * len(ds) + 0.5, 3.0 * len(gens) + 0.6),
-                             squeeze=False, sharex=True, sharey=True)
+    present = [(gi, di) for gi, g in enumerate(gens) for di, d in enumerate(ds)
+               if any(d in rep.worlds.get((g, w, h), {}) for (w, h) in rep.sizes)]
+    if not present:
+        return
+    fig, panels = panel_grid(plt, len(gens), len(ds), present, 3.1, 3.0, extra_w=0.5,
+                             sharex=True, sharey=True)
     xticks = [w * h for (w, h) in rep.sizes]
     allv = []
-    for gi, g in enumerate(gens):
-        for di, d in enumerate(ds):
-            ax = axes[gi][di]
-            ax.set_title(f"{g}, density {density_text(d)}")
-            for label in rep.labels:
-                xs, ys, los, his = [], [], [], []
-                for (w, h) in rep.sizes:
-                    cell = rep.worlds.get((g, w, h), {}).get(d)
-                    p = rep.planner(cell, label) if cell else None
-                    t = (p.get("timing") or {}).get(TIME) if p else None
-                    if not isinstance(t, dict) or not finite(t.get("median")):
-                        continue
-                    xs.append(w * h); ys.append(t["median"] / 1e3)
-                    los.append(nan_or(t.get("p5")) / 1e3); his.append(nan_or(t.get("p95")) / 1e3)
-                if xs:
-                    draw_series(ax, rep, label, xs, ys, los, his)
-                    allv += [v for v in ys + los + his if finite(v) and v > 0]
-            ax.set_xscale("log")
-            if gi == len(gens) - 1:
-                ax.set_xlabel("grid cells (w\u00d7h)")
-            if di == 0:
-                ax.set_ylabel("plan time (\u00b5s)")
+    for gi, di, ax, left, bottom in panels:
+        g, d = gens[gi], ds[di]
+        # A map file's name is long: its density on a line of its own.
+        ax.set_title(f"{g}{chr(10) if '/' in g else ', '}density {density_text(d)}")
+        for label in rep.labels:
+            xs, ys, los, his = [], [], [], []
+            for (w, h) in rep.sizes:
+                cell = rep.worlds.get((g, w, h), {}).get(d)
+                p = rep.planner(cell, label) if cell else None
+                t = (p.get("timing") or {}).get(TIME) if p else None
+                if not isinstance(t, dict) or not finite(t.get("median")):
+                    continue
+                xs.append(w * h); ys.append(t["median"] / 1e3)
+                los.append(nan_or(t.get("p5")) / 1e3); his.append(nan_or(t.get("p95")) / 1e3)
+            if xs:
+                draw_series(ax, rep, label, xs, ys, los, his)
+                allv += [v for v in ys + los + his if finite(v) and v > 0]
+        ax.set_xscale("log")
+        if bottom:  # its own tick labels: sharex shows them on the grid's last row only
+            ax.set_xlabel("grid cells (w\u00d7h)")
+            ax.xaxis.set_tick_params(labelbottom=True)
+        if left:
+            ax.set_ylabel("plan time (\u00b5s)")
     from matplotlib.ticker import FixedLocator, NullLocator
     size_names = [f"{w}\u00b2" if w == h else f"{w}\u00d7{h}" for (w, h) in rep.sizes]
-    for row in axes:
-        for ax in row:
-            log_ticks_both_ends(ax, "y", allv)
-            ax.xaxis.set_major_locator(FixedLocator(xticks))
-            ax.xaxis.set_minor_locator(NullLocator())
-            ax.set_xticklabels(size_names)
-            lo, hi = min(xticks), max(xticks)
-            pad = (hi / lo) ** 0.08 if hi > lo else 1.5
-            ax.set_xlim(lo / pad, hi * pad)
+    for _, _, ax, _, _ in panels:
+        log_ticks_both_ends(ax, "y", allv)
+        ax.xaxis.set_major_locator(FixedLocator(xticks))
+        ax.xaxis.set_minor_locator(NullLocator())
+        ax.set_xticklabels(size_names)
+        lo, hi = min(xticks), max(xticks)
+        pad = (hi / lo) ** 0.08 if hi > lo else 1.5
+        ax.set_xlim(lo / pad, hi * pad)
     cpu = rep.doc.get("environment", {}).get("cpu_model", "unknown CPU") if isinstance(rep.doc.get("environment"), dict) else "unknown CPU"
     finish(fig, rep, rep.labels, "planning time vs grid size (log-log): median, band p5\u2013p95, "
            f"every run [{cpu}]", "plan_time", saver)

@@ -11,7 +11,8 @@ import math
 
 from agvreport import density_text
 from plot_report import TIME, finite, metric_title, metric_unit, scale_of
-from plot_style import log_ticks_both_ends, log_ladder_ticks, note_below_legend, side_legend
+from plot_style import (log_ticks_both_ends, log_ladder_ticks, note_below_legend, panel_grid,
+                        side_legend)
 
 BOX_GROUP = 0.8  # share of a density's slot the planners' boxes take
 
@@ -163,39 +164,36 @@ def plot_ecdf(plt, saver, rep, runs):
     if not rep.wanted(TIME):
         return
     gens, sizes = rep.generators, rep.sizes
-    fig, axes = plt.subplots(len(gens), len(sizes), figsize=(3.6 * len(sizes) + 0.4, 3.0 * len(gens) + 0.6),
-                             squeeze=False, sharey=True)
+    present = [(gi, si) for gi, g in enumerate(gens) for si, (w, h) in enumerate(sizes)
+               if rep.worlds.get((g, w, h))]
+    fig, panels = panel_grid(plt, len(gens), len(sizes), present, 3.6, 3.0, sharey=True)
     drawn = []
-    for gi, g in enumerate(gens):
-        for si, (w, h) in enumerate(sizes):
-            ax = axes[gi][si]
-            cells = rep.worlds.get((g, w, h))
-            ax.set_title(f"{g} {w}\u00d7{h}")
-            if not cells:
-                ax.set_visible(False)
+    for gi, si, ax, left, _ in panels:
+        g, (w, h) = gens[gi], sizes[si]
+        cells = rep.worlds[(g, w, h)]
+        ax.set_title(f"{g} {w}\u00d7{h}")
+        allv = []
+        for label in rep.present(cells.values()):
+            vals = []
+            for cell in cells.values():
+                vals += runs.values(rep.cell_key(cell), label, TIME)
+            if not vals:
                 continue
-            allv = []
-            for label in rep.present(cells.values()):
-                vals = []
-                for cell in cells.values():
-                    vals += runs.values(rep.cell_key(cell), label, TIME)
-                if not vals:
-                    continue
-                x = np.sort(np.asarray(vals) / 1e3)
-                y = np.arange(1, len(x) + 1) / len(x)
-                kw = rep.style.line_kw(label)
-                ax.step(x, y, where="post", color=kw["color"], linestyle=kw["linestyle"], lw=1.3)
-                med = x[(len(x) - 1) // 2]
-                ax.plot([med], [0.5], ms=5, zorder=4, **{**kw, "linestyle": "none"})
-                allv += [float(v) for v in x if v > 0]
-                if label not in drawn:
-                    drawn.append(label)
-            if allv:
-                log_ticks_both_ends(ax, "x", allv)
-            ax.set_ylim(0, 1.02)
-            ax.set_xlabel("plan time (\u00b5s, log scale)")
-            if si == 0:
-                ax.set_ylabel("share of runs \u2264 x")
+            x = np.sort(np.asarray(vals) / 1e3)
+            y = np.arange(1, len(x) + 1) / len(x)
+            kw = rep.style.line_kw(label)
+            ax.step(x, y, where="post", color=kw["color"], linestyle=kw["linestyle"], lw=1.3)
+            med = x[(len(x) - 1) // 2]
+            ax.plot([med], [0.5], ms=5, zorder=4, **{**kw, "linestyle": "none"})
+            allv += [float(v) for v in x if v > 0]
+            if label not in drawn:
+                drawn.append(label)
+        if allv:
+            log_ticks_both_ends(ax, "x", allv)
+        ax.set_ylim(0, 1.02)
+        ax.set_xlabel("plan time (\u00b5s, log scale)")
+        if left:
+            ax.set_ylabel("share of runs \u2264 x")
     if not drawn:
         plt.close(fig)
         return

@@ -1,6 +1,8 @@
 """An `agvbench run` report regrouped for the pictures and the summary (plot.py, plot_dist.py,
 summary_md.py): worlds (generator, size) -> density -> cell, the planners and metrics chosen
-with --planners / --metrics, and every planner's style. Standard library only (the style's
+with --planners / --metrics, and every planner's style. A map file of a map source (`movingai`,
+`image`) is a world of its own, named by its cell (`movingai/arena2.map`), whose one density is
+its obstacle share: files of one size are different maps, not points of one curve over density. Standard library only (the style's
 colours are plain strings; matplotlib is imported where a picture is drawn).
 """
 
@@ -91,9 +93,13 @@ class Report:
             self.labels = [l for l in self.all_labels if l in planners]
         else:
             self.labels = [l for l in self.all_labels if l in present]
-        self.worlds = {}  # (gen, w, h) -> {density: cell}
+        self.worlds = {}  # (gen, w, h) -> {density: cell}; gen = the cell's name for a map file
+        gens = self.config.get("generators")
+        sources = {g.get("name") for g in gens if isinstance(g, dict) and "map_files" in g} \
+            if isinstance(gens, list) else set()
         for cell in doc["cells"]:
-            key = (cell["generator"], int(cell["width"]), int(cell["height"]))
+            world = self.cell_key(cell) if cell["generator"] in sources else cell["generator"]
+            key = (world, int(cell["width"]), int(cell["height"]))
             self.worlds.setdefault(key, {})[float(cell["density"])] = cell
         self.generators = []
         self.sizes = []

@@ -62,6 +62,30 @@ class Style:
 # Legends and notes beside the panels
 
 
+def panel_grid(plt, rows, cols, present, panel_w, panel_h, extra_w=0.4, **subplot_kw):
+    """The axes of a rows x cols grid of panels of which `present` ((row, col) pairs, in row
+    order) have data. Every panel present: the grid as it is. Otherwise (a sweep of map files,
+    each file a row with one panel of its own) the present panels wrap four to a row, so no page
+    of empty rows. Returns (fig, [(row, col, ax, left, bottom)]): left = first of its row,
+    bottom = nothing under it; the unused axes are hidden."""
+    full = len(present) == rows * cols
+    ncols = cols if full else max(1, min(4, len(present)))
+    nrows = rows if full else -(-len(present) // ncols)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(panel_w * ncols + extra_w, panel_h * nrows + 0.6),
+                             squeeze=False, **subplot_kw)
+    flat = [ax for row in axes for ax in row]
+    out = []
+    for i, (r, c) in enumerate(present):
+        k = r * cols + c if full else i
+        out.append((r, c, flat[k], k % ncols == 0, k + ncols >= len(flat) or
+                    (not full and i + ncols >= len(present))))
+    used = {id(a) for (_, _, a, _, _) in out}
+    for ax in flat:
+        if id(ax) not in used:
+            ax.set_visible(False)
+    return fig, out
+
+
 def side_legend(fig, style, labels, title=None, line=True, names=None):
     """The planners' legend in a column right of every panel (outside the axes; the saved
     picture is cropped to include it, savefig bbox_inches="tight"). Call after tight_layout.

@@ -158,6 +158,54 @@ fi
 wide=$(awk '/^\|/ { if (length($0) > m) m = length($0) } END { print m + 0 }' "$sum")
 [ "$wide" -le 260 ] && ok "summary.md rows at most 260 characters (widest $wide)" || bad "summary.md row of $wide characters"
 
+# A sweep of map files (a map source's cells, named by the file): each file a world of its own
+# (its pictures named by it), never points of one curve over the files' obstacle shares; the
+# grid pictures hold one panel per file, wrapped, with no empty panel.
+"$py" - "$tiny" "$work/files.json" <<'PY'
+import json, sys
+doc = json.load(open(sys.argv[1]))
+doc["config"]["generators"] = [{"name": "movingai", "params": {"files": ["maps/*.map"]},
+                                "map_files": []}]
+cells = doc["cells"][:5]
+for k, cell in enumerate(cells):
+    name = f"room{k}.map"
+    cell["cell"] = f"movingai/{name}"
+    cell["generator"] = "movingai"
+    cell["density"] = 0.1 + 0.037 * k  # measured shares: no two alike
+    doc["config"]["generators"][0]["map_files"].append({"name": name, "content_hash": "0"})
+doc["cells"] = cells
+json.dump(doc, open(sys.argv[2], "w"))
+PY
+fo="$work/files"
+if "$py" "$plot" "$work/files.json" "$fo" >/dev/null 2>"$work/files.err"; then
+  ok "plot.py on a sweep of five map files"
+else
+  bad "plot.py on map files: $(cat "$work/files.err")"
+fi
+nm=$(ls "$fo"/metrics_movingai_room*.map_*.png 2>/dev/null | wc -l)
+[ "$nm" -eq 5 ] && ok "one metrics picture per map file" || bad "metrics pictures per file: $nm"
+grep -q "layout:" "$work/files.err" && bad "map files: $(grep layout: "$work/files.err")" || ok "map files: no layout problem reported"
+"$py" - "$root" "$work/files.json" <<'PY' && ok "map files: five panels in the grid pictures, none empty" || bad "map files: panel layout"
+import json, sys
+sys.path.append(sys.argv[1] + "/reports")  # after the standard library: reports/html.py
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import plot, plot_report
+rep = plot_report.Report(json.load(open(sys.argv[2])))
+assert len(rep.worlds) == 5, rep.worlds.keys()
+assert all(len(cells) == 1 for cells in rep.worlds.values())
+captured = []
+class Saver:
+    def save(self, fig, stem):
+        captured.append((stem, [ax for ax in fig.axes if ax.get_visible() and ax.get_title()]))
+for draw in (plot.plot_success, plot.plot_time):
+    draw(plt, Saver(), rep)
+for stem, axes in captured:
+    assert len(axes) == 5, (stem, len(axes))
+    assert all(ax.has_data() for ax in axes), stem
+PY
+
 # Filters and formats: PDF of two planners and two metrics.
 fo="$work/filtered"
 if "$py" "$plot" "$tiny" "$fo" --format pdf --planners astar,rrt --metrics path_length,plan_time_ns >/dev/null 2>"$work/f.err"; then

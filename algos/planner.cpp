@@ -80,7 +80,8 @@ PlanResult plan_checked(const Planner& planner, const PlanRequest& request) {
   // global planner, HMA*'s MA*) fall inside the difference.
   const std::int64_t checks_before = collision_checks_on_thread();
   PlanResult result = plan_checked_query(planner, request);
-  result.work.collision_checks = collision_checks_on_thread() - checks_before;
+  if (planner.counts_collision_checks())
+    result.work.collision_checks = collision_checks_on_thread() - checks_before;
   return result;
 }
 

@@ -211,12 +211,17 @@ class Planner {
   // Thread-safe: a planner object holds only its configuration; per-call state lives in
   // request.scratch. Start and goal are in bounds and free: callers go through plan_checked().
   virtual PlanResult plan(const PlanRequest& request) const = 0;
+  // false: plan_checked leaves work.collision_checks undefined for this planner, whose count is
+  // not a function of its request and seed (ompl_bitstar, docs/PLANNERS.md "OMPL planners"), so
+  // no report holds a work counter that differs between two runs of one sweep.
+  virtual bool counts_collision_checks() const { return true; }
 };
 
 // The one entry point for callers (engine runs, `agvbench plan` and `scen`, tests): refuses a
 // start or goal outside the grid or on an obstacle with Failure::invalid_input, naming which,
 // and otherwise returns planner.plan(request). Either way it sets result.work.collision_checks to
-// the checks made on this thread during the call (core/line_of_sight.h), sub-planners included.
+// the checks made on this thread during the call (core/line_of_sight.h), sub-planners included,
+// for every planner that counts them (Planner::counts_collision_checks).
 PlanResult plan_checked(const Planner& planner, const PlanRequest& request);
 
 }  // namespace agv

@@ -221,6 +221,8 @@ class OmplPlanner final : public Planner {
   OmplPlanner(const OmplEntry& entry, const OmplOptions& options)
       : entry_(entry), options_(options) {}
 
+  bool counts_collision_checks() const override { return entry_.reproducible_checks; }
+
   PlanResult plan(const PlanRequest& request) const override {
     silence_ompl();
     PlanResult result;
@@ -337,10 +339,11 @@ PlannerInfo ompl_planner_info(const OmplEntry& entry,
   info.source = entry.source;
   info.counters = {{"samples",
                     "states drawn by OMPL's state samplers (valid-state and informed samplers "
-                    "included, each attempt counted)"},
-                   {"collision_checks",
-                    "points (state validity) and segments (motion validity) tested by the shared "
-                    "line-of-sight test"}};
+                    "included, each attempt counted)"}};
+  if (entry.reproducible_checks)
+    info.counters.push_back({"collision_checks",
+                             "points (state validity) and segments (motion validity) tested by "
+                             "the shared line-of-sight test"});
   info.stochastic = true;
   info.proves_no_path = false;  // gives up with limit after its budget
   info.params = entry.decls.specs();

@@ -68,6 +68,9 @@ struct OmplEntry {
                                  std::uint32_t seed) = nullptr;
   // Sets the planner's parameters, after the adapter gave it the problem, before setup().
   void (*configure)(ompl::base::Planner& planner, const OmplOptions& options) = nullptr;
+  // false: the planner's collision-check count is not reproducible and is not reported (BIT*:
+  // docs/PLANNERS.md "OMPL planners"); its paths and samples are.
+  bool reproducible_checks = true;
 };
 
 // The registry entry of an OMPL planner: kind sampling, stochastic, gives up with limit; `make`

@@ -154,6 +154,7 @@ std::vector<OmplEntry> make_entries() {
     add("ompl_bitstar", "OMPL's BIT*: batches of samples searched as an implicit graph, best path",
         "og::BITstar; Gammell, Srinivasa, Barfoot 2015", std::move(d), OmplDriver::solve, false,
         &unseeded<og::BITstar>, &configure_bitstar);
+    entries.back().reproducible_checks = false;
   }
   {
     ParamDecls<OmplOptions> d;

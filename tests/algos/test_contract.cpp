@@ -243,12 +243,17 @@ std::vector<std::string> reported_counters(const PlanResult& r) {
 }
 
 // Every planner reports exactly the counters its registry entry declares, on every run it returns
-// from (start == goal included): collision_checks always, positive on every non-trivial query
+// from (start == goal included): collision_checks always (but for the one planner whose count is
+// not reproducible, which neither declares nor reports it), positive on every non-trivial query
 // (the start's neighbourhood, a first segment or a rollout is always checked), its kind's counter,
 // and each declared counter positive on some map. The engine reports them under their names.
 TEST_P(PlannerContract, ReportsTheWorkCountersItDeclares) {
   const std::vector<std::string> declared = declared_counters(info());
-  ASSERT_TRUE(std::binary_search(declared.begin(), declared.end(), "collision_checks"));
+  const bool counts_checks = planner().counts_collision_checks();
+  // docs/PLANNERS.md "OMPL planners": BIT*'s count differs between two plans of one seed.
+  EXPECT_EQ(counts_checks, info().name != "ompl_bitstar");
+  EXPECT_EQ(std::binary_search(declared.begin(), declared.end(), "collision_checks"),
+            counts_checks);
   if (const char* own = kind_counter(info())) {
     EXPECT_TRUE(std::binary_search(declared.begin(), declared.end(), std::string(own))) << own;
   }
@@ -258,8 +263,8 @@ TEST_P(PlannerContract, ReportsTheWorkCountersItDeclares) {
     SCOPED_TRACE(describe(m, static_cast<int>(i)));
     const PlanResult r = planned(m, static_cast<int>(i), m.start, m.goal, scratch_);
     EXPECT_EQ(reported_counters(r), declared);
-    ASSERT_TRUE(r.work.collision_checks.has_value());
-    EXPECT_GT(*r.work.collision_checks, 0);
+    EXPECT_EQ(r.work.collision_checks.has_value(), counts_checks);
+    if (counts_checks) EXPECT_GT(r.work.collision_checks.value_or(0), 0);
     for (std::size_t c = 0; c < kWorkCounterNames.size(); ++c)
       for (const auto& [name, value] : work_counter_values(r.work))
         if (name == std::string(kWorkCounterNames[c])) most[c] = std::max(most[c], value);

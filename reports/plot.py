@@ -325,8 +325,8 @@ def plot_time(plt, saver, rep):
     allv = []
     for gi, di, ax, left, bottom in panels:
         g, d = gens[gi], ds[di]
-        # A map file's name is long: its density on a line of its own.
-        ax.set_title(f"{g}{chr(10) if '/' in g else ', '}density {density_text(d)}")
+        sep = "\n" if "/" in g else ", "  # a map file's name is long: its density below it
+        ax.set_title(f"{g}{sep}density {density_text(d)}")
         for label in rep.labels:
             xs, ys, los, his = [], [], [], []
             for (w, h) in rep.sizes:

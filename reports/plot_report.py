@@ -2,8 +2,9 @@
 summary_md.py): worlds (generator, size) -> density -> cell, the planners and metrics chosen
 with --planners / --metrics, and every planner's style. A map file of a map source (`movingai`,
 `image`) is a world of its own, named by its cell (`movingai/arena2.map`), whose one density is
-its obstacle share: files of one size are different maps, not points of one curve over density. Standard library only (the style's
-colours are plain strings; matplotlib is imported where a picture is drawn).
+its obstacle share: files of one size are different maps, not points of one curve over density.
+Standard library only (the style's colours are plain strings; matplotlib is imported where a
+picture is drawn).
 """
 
 import math

@@ -74,15 +74,12 @@ def panel_grid(plt, rows, cols, present, panel_w, panel_h, extra_w=0.4, **subplo
     fig, axes = plt.subplots(nrows, ncols, figsize=(panel_w * ncols + extra_w, panel_h * nrows + 0.6),
                              squeeze=False, **subplot_kw)
     flat = [ax for row in axes for ax in row]
+    for ax in flat[len(present):]:  # the wrapped layout's last row, past the last panel
+        ax.set_visible(False)
     out = []
     for i, (r, c) in enumerate(present):
         k = r * cols + c if full else i
-        out.append((r, c, flat[k], k % ncols == 0, k + ncols >= len(flat) or
-                    (not full and i + ncols >= len(present))))
-    used = {id(a) for (_, _, a, _, _) in out}
-    for ax in flat:
-        if id(ax) not in used:
-            ax.set_visible(False)
+        out.append((r, c, flat[k], k % ncols == 0, k + ncols >= len(present)))
     return fig, out
 
 

@@ -1,7 +1,9 @@
 // Grid search throughput (perf/README.md "Grid search"): A* and Dijkstra, through the planner
-// interface, on uniform random maps (corner to corner) and on the five MovingAI maps (a fixed
-// subset of each .scen spanning its buckets). One iteration runs the case's whole query set;
-// expansions_per_s is the expansion count of those searches over the iteration time.
+// interface, on uniform random maps (corner to corner) and on the five MovingAI maps of the full
+// sets (a fixed subset of each .scen spanning its buckets), found as the tests find them
+// (tests/movingai_data.h); without them, on the two maps shipped in tests/data/movingai, named
+// `*_shipped` since their queries are another subset. One iteration runs the case's whole query
+// set; expansions_per_s is the expansion count of those searches over the iteration time.
 
 #include <benchmark/benchmark.h>
 
@@ -15,6 +17,7 @@
 #include "generators/map_generators.h"
 #include "generators/movingai.h"
 #include "perf/bench_maps.h"
+#include "tests/movingai_data.h"
 
 namespace agv {
 namespace {
@@ -41,10 +44,12 @@ Case uniform_case(int side, double density) {
 
 // Every k-th scenario in file order (files list buckets in increasing order), so the subset
 // spans short and long queries alike.
-Case movingai_case(const std::string& map_file) {
-  const std::string dir = std::string(AGV_SHARED_MAPS) + "/";
-  Case c{map_file.substr(0, map_file.find('.')), "no_corner_cut", read_map(dir + map_file), {}};
-  const auto scen = read_scen(dir + map_file + ".scen");
+Case movingai_case(const std::string& dir, const std::string& map_file, const std::string& suffix) {
+  Case c{map_file.substr(0, map_file.find('.')) + suffix,
+         "no_corner_cut",
+         read_map(dir + "/" + map_file),
+         {}};
+  const auto scen = read_scen(dir + "/" + map_file + ".scen");
   const std::size_t step = std::max<std::size_t>(1, scen.size() / kQueriesPerMap);
   for (std::size_t i = step / 2; i < scen.size() && c.queries.size() < kQueriesPerMap; i += step)
     c.queries.push_back({scen[i].start, scen[i].goal});
@@ -80,9 +85,17 @@ int main(int argc, char** argv) {
   for (int side : {64, 256, 1024})
     for (double density : {0.1, 0.3})
       cases.push_back(std::make_unique<Case>(uniform_case(side, density)));
-  for (const char* map :
-       {"arena2.map", "random512-10-0.map", "maze512-1-0.map", "8room_000.map", "Berlin_0_512.map"})
-    cases.push_back(std::make_unique<Case>(movingai_case(map)));
+  if (const std::string sets = testdata::movingai_sets(); !sets.empty()) {
+    for (const char* map : {"arena2.map", "random512-10-0.map", "maze512-1-0.map", "8room_000.map",
+                            "Berlin_0_512.map"})
+      cases.push_back(std::make_unique<Case>(movingai_case(sets, map, "")));
+  } else {
+    std::fprintf(stderr, "bench_search: %s; using the maps shipped in tests/data/movingai\n",
+                 testdata::kNoSetsReason);
+    for (const char* map : {"random512-10-0.map", "maze512-1-0.map"})
+      cases.push_back(
+          std::make_unique<Case>(movingai_case(testdata::shipped_maps(), map, "_shipped")));
+  }
 
   static std::vector<ConfiguredPlanner> planners;
   planners.reserve(2 * cases.size());

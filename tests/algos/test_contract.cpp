@@ -264,7 +264,9 @@ TEST_P(PlannerContract, ReportsTheWorkCountersItDeclares) {
     const PlanResult r = planned(m, static_cast<int>(i), m.start, m.goal, scratch_);
     EXPECT_EQ(reported_counters(r), declared);
     EXPECT_EQ(r.work.collision_checks.has_value(), counts_checks);
-    if (counts_checks) EXPECT_GT(r.work.collision_checks.value_or(0), 0);
+    if (counts_checks) {
+      EXPECT_GT(r.work.collision_checks.value_or(0), 0);
+    }
     for (std::size_t c = 0; c < kWorkCounterNames.size(); ++c)
       for (const auto& [name, value] : work_counter_values(r.work))
         if (name == std::string(kWorkCounterNames[c])) most[c] = std::max(most[c], value);

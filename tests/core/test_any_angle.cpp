@@ -25,6 +25,7 @@
 #include "core/rng.h"
 #include "generators/map_generators.h"
 #include "generators/movingai.h"
+#include "tests/movingai_data.h"
 
 namespace agv {
 namespace {
@@ -442,15 +443,12 @@ TEST(AnyAngle, CheckerboardPinchesUnderAllow) {
 // ---------------------------------------------------------------------------------------------
 // MovingAI: the scenario optima (no_corner_cut grid paths) are never below the bound.
 
-TEST(AnyAngle, MovingAiOptimaAreNeverBelowTheBound) {
-  // The shorter buckets (the search's cost grows with the bend points it must look at, tens of
-  // thousands on these maps), 60 queries a map spread over them.
-  const char* const kMaps[] = {"arena2.map", "random512-10-0.map", "maze512-1-0.map",
-                               "8room_000.map", "Berlin_0_512.map"};
-  const std::string dir = std::string(AGV_SHARED_MAPS) + "/";
+// The shorter buckets (the search's cost grows with the bend points it must look at, tens of
+// thousands on these maps), 60 queries a map spread over them; returns how many were checked.
+int check_bound_below_optima(const std::string& dir, const std::vector<const char*>& maps) {
   AnyAngleScratch any;
   int checked = 0;
-  for (const char* name : kMaps) {
+  for (const char* name : maps) {
     const Grid grid = read_map(dir + name);
     std::vector<ScenarioQuery> queries = read_scen(dir + name + ".scen");
     std::erase_if(queries, [](const ScenarioQuery& q) { return q.bucket >= kMaxBucket; });
@@ -459,7 +457,8 @@ TEST(AnyAngle, MovingAiOptimaAreNeverBelowTheBound) {
       const ScenarioQuery& s = queries[q];
       for (CornerRule rule : {CornerRule::allow, CornerRule::no_corner_cut}) {
         const auto bound = any_angle_length(grid, s.start, s.goal, rule, any);
-        ASSERT_TRUE(bound) << name << " line " << s.line;
+        EXPECT_TRUE(bound) << name << " line " << s.line;
+        if (!bound) return checked;
         EXPECT_GE(*bound, euclid(s.start, s.goal) * (1 - 1e-12)) << name << " line " << s.line;
         // The files print the optimum to 8 decimals.
         EXPECT_LE(*bound, s.optimal_length + 1e-8) << name << " line " << s.line;
@@ -467,6 +466,20 @@ TEST(AnyAngle, MovingAiOptimaAreNeverBelowTheBound) {
       }
     }
   }
+  return checked;
+}
+
+TEST(AnyAngle, MovingAiShippedOptimaAreNeverBelowTheBound) {
+  const int checked = check_bound_below_optima(testdata::shipped_maps() + "/",
+                                               {"random512-10-0.map", "maze512-1-0.map"});
+  EXPECT_EQ(checked, 2 * (16 + 2));  // the slices hold 16 and 2 queries of buckets 0-7
+}
+
+TEST(AnyAngle, FullSetsOptimaAreNeverBelowTheBound) {
+  AGV_MOVINGAI_SETS_OR_SKIP(sets);
+  const int checked = check_bound_below_optima(
+      sets + "/",
+      {"arena2.map", "random512-10-0.map", "maze512-1-0.map", "8room_000.map", "Berlin_0_512.map"});
   EXPECT_GT(checked, 500);
 }
 

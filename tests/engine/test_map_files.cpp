@@ -17,6 +17,7 @@
 #include "engine/sweep_runner.h"
 #include "generators/movingai.h"
 #include "generators/occupancy_image.h"
+#include "tests/movingai_data.h"
 
 namespace agv {
 namespace {
@@ -24,7 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string kMaps = AGV_SHARED_MAPS;
+const std::string kShipped = testdata::shipped_maps();
 
 // A fresh folder under the system's temporary one, removed with the object.
 class TempDir {
@@ -123,33 +124,32 @@ std::size_t metric(std::string_view name) {
   return 0;
 }
 
-// The acceptance check of issue 16: every 20th .scen query of every shared map (942 of 18,820)
-// through A* and Dijkstra, each path as long as the scenario's optimum. Without the any-angle
+// Every `every`-th .scen query of each map matching `glob` through A* and Dijkstra, each path as
+// long as the scenario's optimum; `expected_maps` queries in all. Without the any-angle
 // reference, whose cost grows with the start's component (the whole 512x512 maze: seconds per
 // query), as configs/movingai.json does.
-TEST(MapFiles, ScenQueriesOfTheSharedMapsMatchTheirOptimum) {
-  const json j = {
-      {"name", "scen"},
-      {"generators",
-       {{{"name", "movingai"},
-         {"params", {{"files", {kMaps + "/*.map"}}, {"queries", "scen"}, {"scen_every", 20}}}}}},
-      {"planners", {"astar", "dijkstra"}},
-      {"references", {{"any_angle", false}}},
-      {"report", "unused.json"}};
+void expect_scen_optima(const std::string& glob, int every, std::int64_t expected_maps) {
+  const json j = {{"name", "scen"},
+                  {"generators",
+                   {{{"name", "movingai"},
+                     {"params", {{"files", {glob}}, {"queries", "scen"}, {"scen_every", every}}}}}},
+                  {"planners", {"astar", "dijkstra"}},
+                  {"references", {{"any_angle", false}}},
+                  {"report", "unused.json"}};
   const SweepConfig config = parse_config(j);
   const SweepPlan plan = plan_sweep(config);
-  ASSERT_GE(plan.cells.size(), 5u);
-  std::int64_t expected_maps = 0;
+  ASSERT_GE(plan.cells.size(), 2u);
+  std::int64_t maps = 0;
   for (const auto& cell : plan.cells) {
     ASSERT_NE(cell.file, nullptr);
     EXPECT_EQ(cell.key, "movingai/" + fs::path(cell.file->path).filename().string());
     EXPECT_EQ(static_cast<std::size_t>(cell.maps),
-              (read_scen(cell.file->path + ".scen").size() + 19) / 20)
+              (read_scen(cell.file->path + ".scen").size() + every - 1) / every)
         << cell.key;
-    expected_maps += cell.maps;
+    maps += cell.maps;
   }
-  EXPECT_EQ(plan.map_tasks(), expected_maps);
-  EXPECT_EQ(expected_maps, 942);
+  EXPECT_EQ(plan.map_tasks(), maps);
+  EXPECT_EQ(maps, expected_maps);
   SweepOptions options;
   options.threads = 2;
   const SweepResults r = run_sweep(config, options);
@@ -168,7 +168,7 @@ TEST(MapFiles, ScenQueriesOfTheSharedMapsMatchTheirOptimum) {
       ++checked;
     }
   }
-  EXPECT_EQ(checked, 2 * expected_maps);
+  EXPECT_EQ(checked, 2 * maps);
   // And the report aggregates it like any metric.
   const json report = build_report(config, r);
   for (const auto& cell : report["cells"])
@@ -179,17 +179,30 @@ TEST(MapFiles, ScenQueriesOfTheSharedMapsMatchTheirOptimum) {
   EXPECT_EQ(report["config"]["references"], json({{"any_angle", false}}));
 }
 
+// Every 4th query of the shipped slices: 89 of random512's 356, 76 of the maze's 303.
+TEST(MapFiles, ScenQueriesOfTheShippedMapsMatchTheirOptimum) {
+  expect_scen_optima(kShipped + "/*.map", 4, 89 + 76);
+}
+
+// The acceptance check of issue 16: every 20th .scen query of every map of the full sets (942 of
+// 18,820).
+TEST(MapFiles, FullSetsScenQueriesMatchTheirOptimum) {
+  AGV_MOVINGAI_SETS_OR_SKIP(sets);
+  expect_scen_optima(sets + "/*.map", 20, 942);
+}
+
 // A scenario optimum assumes MovingAI's convention; under another collision model scen_ratio is
 // not defined (and a bucket range selects only its queries).
 TEST(MapFiles, ScenRatioOnlyUnderTheScenariosConvention) {
-  json j = {
-      {"generators",
-       {{{"name", "movingai"},
-         {"params",
-          {{"files", {kMaps + "/arena2.map"}}, {"queries", "scen"}, {"scen_buckets", {3, 4}}}}}}},
-      {"planners", {"astar"}},
-      {"report", "unused.json"}};
-  const auto queries = read_scen(kMaps + "/arena2.map.scen");
+  json j = {{"generators",
+             {{{"name", "movingai"},
+               {"params",
+                {{"files", {kShipped + "/random512-10-0.map"}},
+                 {"queries", "scen"},
+                 {"scen_buckets", {3, 4}}}}}}},
+            {"planners", {"astar"}},
+            {"report", "unused.json"}};
+  const auto queries = read_scen(kShipped + "/random512-10-0.map.scen");
   std::size_t in_range = 0;
   for (const auto& q : queries) in_range += q.bucket >= 3 && q.bucket <= 4;
   ASSERT_GT(in_range, 0u);
@@ -286,17 +299,18 @@ TEST(MapFiles, FileMapSweepIsIdenticalOnOneAndTwoThreads) {
   TempDir dir;
   const auto greys = random_greys(31, 29, 77);
   write_pgm(dir / "a.pgm", greys, 31, 29, false);
-  const json j = {{"name", "files"},
-                  {"seed", 4},
-                  {"generators",
-                   {"uniform",
-                    {{"name", "movingai"}, {"params", {{"files", {kMaps + "/arena2.map"}}}}},
-                    {{"name", "image"}, {"params", {{"files", {"a.pgm"}}}}}}},
-                  {"sizes", {16}},
-                  {"maps_per_cell", 6},
-                  {"map", {{"endpoints", "random"}, {"min_distance", 10}}},
-                  {"planners", {"astar", "ma_star", "rrt"}},
-                  {"report", "unused.json"}};
+  const json j = {
+      {"name", "files"},
+      {"seed", 4},
+      {"generators",
+       {"uniform",
+        {{"name", "movingai"}, {"params", {{"files", {kShipped + "/random512-10-0.map"}}}}},
+        {{"name", "image"}, {"params", {{"files", {"a.pgm"}}}}}}},
+      {"sizes", {16}},
+      {"maps_per_cell", 6},
+      {"map", {{"endpoints", "random"}, {"min_distance", 10}}},
+      {"planners", {"astar", "ma_star", "rrt"}},
+      {"report", "unused.json"}};
   const SweepConfig config = parse_config(j, dir.path());
   std::string text[2];
   for (int threads : {1, 2}) {
@@ -308,7 +322,7 @@ TEST(MapFiles, FileMapSweepIsIdenticalOnOneAndTwoThreads) {
     text[threads - 1] = deterministic_part(build_report(config, r)).dump(1);
   }
   EXPECT_EQ(text[0], text[1]);
-  EXPECT_NE(text[0].find("\"movingai/arena2.map\""), std::string::npos);
+  EXPECT_NE(text[0].find("\"movingai/random512-10-0.map\""), std::string::npos);
   EXPECT_NE(text[0].find("\"image/a.pgm\""), std::string::npos);
 }
 

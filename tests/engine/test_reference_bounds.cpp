@@ -51,7 +51,7 @@ TEST(ReferenceBounds, NoPathBeatsTheAnyAngleOptimumOnThousandsOfMaps) {
                   {"generators", {"uniform", "blocks", "rooms"}},
                   {"sizes", {12, 18}},
                   {"densities", {0.1, 0.25, 0.4}},
-                  {"maps_per_cell", 120},
+                  {"maps_per_cell", 60},
                   {"map", {{"require_solvable", true}}},
                   {"time_limit_s", 5.0},
                   {"planners", static_planners()}};
@@ -83,12 +83,13 @@ TEST(ReferenceBounds, NoPathBeatsTheAnyAngleOptimumOnThousandsOfMaps) {
       EXPECT_NEAR(out.metrics[kOptimalityMetric], 1.0, 1e-12) << label << " task " << run.task;
     }
   });
-  // 3 x 2 x 3 cells of 120 maps: 2160 maps, and every planner found most of its paths.
-  EXPECT_GT(checked, 20000);
+  // 3 x 2 x 3 cells of 60 maps: 1080 maps (half the 2160 it once had: the same property, and
+  // 36 s less of the suite's CPU), and every planner found most of its paths.
+  EXPECT_GT(checked, 10000);
   for (const auto& entry : static_planners()) {
     const std::string name =
         entry.is_string() ? entry.get<std::string>() : entry["name"].get<std::string>();
-    EXPECT_GT(successes[name], 1000) << name;
+    EXPECT_GT(successes[name], 500) << name;
   }
   // A smoothed curve's turns mean what a polyline's do (docs/METRICS.md "turns"): kin_astar's
   // B-spline and improved_astar's Bezier corners stay within 2x of A*'s mean in every cell.

@@ -1,5 +1,5 @@
-// MovingAI .map / .scen reading and writing: the five shared benchmark maps, round trips, and a
-// table of malformed inputs whose messages must name the line.
+// MovingAI .map / .scen reading and writing: the shipped benchmark maps (and the full sets where
+// present), round trips, and a table of malformed inputs whose messages must name the line.
 
 #include <gtest/gtest.h>
 
@@ -13,17 +13,21 @@
 #include "core/input_error.h"
 #include "core/rng.h"
 #include "generators/movingai.h"
+#include "tests/movingai_data.h"
 
 namespace agv {
 namespace {
-
-const std::string kMaps = AGV_SHARED_MAPS;
 
 struct SharedMap {
   const char* name;
   int width;
   int height;
   std::size_t scenarios;
+};
+// The slices of tests/data/movingai (README there) and the five maps of the full sets we test on.
+constexpr SharedMap kShippedMaps[] = {
+    {"random512-10-0.map", 512, 512, 356},
+    {"maze512-1-0.map", 512, 512, 303},
 };
 constexpr SharedMap kSharedMaps[] = {
     {"arena2.map", 281, 209, 910},        {"random512-10-0.map", 512, 512, 1780},
@@ -53,42 +57,77 @@ std::vector<ScenarioQuery> parse_scen_text(const std::string& text) {
   return parse_scen(in, "test.scen");
 }
 
-TEST(MovingAi, ReadsTheSharedMapsAndScenarios) {
-  for (const SharedMap& m : kSharedMaps) {
-    const std::string path = kMaps + "/" + m.name;
-    const Grid g = read_map(path);
-    EXPECT_EQ(g.width(), m.width) << m.name;
-    EXPECT_EQ(g.height(), m.height) << m.name;
-    EXPECT_EQ(g.obstacle_count(), count_obstacle_chars(path)) << m.name;
-    EXPECT_GT(g.free_count(), 0);
+void expect_reads(const std::string& dir, const SharedMap& m) {
+  const std::string path = dir + "/" + m.name;
+  const Grid g = read_map(path);
+  EXPECT_EQ(g.width(), m.width) << m.name;
+  EXPECT_EQ(g.height(), m.height) << m.name;
+  EXPECT_EQ(g.obstacle_count(), count_obstacle_chars(path)) << m.name;
+  EXPECT_GT(g.free_count(), 0);
 
-    const std::string scen_path = path + ".scen";
-    const std::vector<ScenarioQuery> queries = read_scen(scen_path);
-    EXPECT_EQ(queries.size(), m.scenarios) << m.name;
-    for (const ScenarioQuery& q : queries) {
-      EXPECT_EQ(q.map, m.name);
-      ASSERT_NO_THROW(check_scenario_fits(g, q, scen_path)) << m.name << " line " << q.line;
-    }
+  const std::string scen_path = path + ".scen";
+  const std::vector<ScenarioQuery> queries = read_scen(scen_path);
+  EXPECT_EQ(queries.size(), m.scenarios) << m.name;
+  for (const ScenarioQuery& q : queries) {
+    EXPECT_EQ(q.map, m.name);
+    ASSERT_NO_THROW(check_scenario_fits(g, q, scen_path)) << m.name << " line " << q.line;
   }
 }
 
+TEST(MovingAi, ReadsTheShippedMapsAndScenarios) {
+  for (const SharedMap& m : kShippedMaps) expect_reads(testdata::shipped_maps(), m);
+}
+
+TEST(MovingAi, FullSetsReadWithTheirScenarios) {
+  AGV_MOVINGAI_SETS_OR_SKIP(sets);
+  for (const SharedMap& m : kSharedMaps) expect_reads(sets, m);
+}
+
 TEST(MovingAi, ScenarioFieldsAndLineNumbers) {
-  const std::vector<ScenarioQuery> q = read_scen(kMaps + "/arena2.map.scen");
+  const std::vector<ScenarioQuery> q =
+      read_scen(testdata::shipped_maps() + "/random512-10-0.map.scen");
   ASSERT_FALSE(q.empty());
   EXPECT_EQ(q[0].bucket, 0);
-  EXPECT_EQ(q[0].map_width, 281);
-  EXPECT_EQ(q[0].map_height, 209);
-  EXPECT_EQ(q[0].start, (Cell{99, 159}));
-  EXPECT_EQ(q[0].goal, (Cell{101, 162}));
-  EXPECT_DOUBLE_EQ(q[0].optimal_length, 3.82842712);
+  EXPECT_EQ(q[0].map_width, 512);
+  EXPECT_EQ(q[0].map_height, 512);
+  EXPECT_EQ(q[0].start, (Cell{174, 10}));
+  EXPECT_EQ(q[0].goal, (Cell{172, 9}));
+  EXPECT_DOUBLE_EQ(q[0].optimal_length, 2.41421356);
   EXPECT_EQ(q[0].line, 2);
   EXPECT_EQ(q[1].line, 3);
 }
 
-TEST(MovingAi, BerlinHasCrlfAndParsesLikeLf) {
-  const std::string path = kMaps + "/Berlin_0_512.map";
+std::string file_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Windows line endings, made from a shipped file: the map and its scenarios read as from LF.
+TEST(MovingAi, CrlfParsesLikeLf) {
+  const std::string path = testdata::shipped_maps() + "/random512-10-0.map";
+  const std::string lf = file_text(path);
+  ASSERT_EQ(lf.find('\r'), std::string::npos);
+  std::string crlf;
+  for (char c : lf) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  EXPECT_TRUE(parse_map_text(crlf).same_cells(read_map(path)));
+  std::string scen_crlf;
+  for (char c : file_text(path + ".scen"))
+    scen_crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const auto from_crlf = parse_scen_text(scen_crlf);
+  const auto from_lf = read_scen(path + ".scen");
+  ASSERT_EQ(from_crlf.size(), from_lf.size());
+  for (std::size_t i = 0; i < from_lf.size(); ++i) {
+    EXPECT_EQ(from_crlf[i].map, from_lf[i].map);
+    EXPECT_EQ(from_crlf[i].goal, from_lf[i].goal);
+    EXPECT_DOUBLE_EQ(from_crlf[i].optimal_length, from_lf[i].optimal_length);
+  }
+}
+
+// The one published map that really has CRLF endings.
+TEST(MovingAi, FullSetsBerlinHasCrlfAndParsesLikeLf) {
+  AGV_MOVINGAI_SETS_OR_SKIP(sets);
+  const std::string path = sets + "/Berlin_0_512.map";
+  const std::string text = file_text(path);
   ASSERT_NE(text.find("\r\n"), std::string::npos);
   std::string lf;
   for (char c : text) {
@@ -108,11 +147,11 @@ TEST(MovingAi, WriteThenReadIsIdentical) {
     write_map(g, out);
     EXPECT_TRUE(parse_map_text(out.str()).same_cells(g));
   }
-  // Through a file, starting from a shared map.
-  const Grid arena = read_map(kMaps + "/arena2.map");
+  // Through a file, starting from a shipped benchmark map.
+  const Grid maze = read_map(testdata::shipped_maps() + "/maze512-1-0.map");
   const std::string tmp = testing::TempDir() + "/agv_roundtrip.map";
-  write_map_file(arena, tmp);
-  EXPECT_TRUE(read_map(tmp).same_cells(arena));
+  write_map_file(maze, tmp);
+  EXPECT_TRUE(read_map(tmp).same_cells(maze));
   std::filesystem::remove(tmp);
 }
 

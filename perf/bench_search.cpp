@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -85,7 +86,12 @@ int main(int argc, char** argv) {
   for (int side : {64, 256, 1024})
     for (double density : {0.1, 0.3})
       cases.push_back(std::make_unique<Case>(uniform_case(side, density)));
-  if (const std::string sets = testdata::movingai_sets(); !sets.empty()) {
+  const std::string sets = testdata::movingai_sets();
+  if (!sets.empty() && !std::filesystem::is_directory(sets)) {
+    std::fprintf(stderr, "bench_search: AGVBENCH_MOVINGAI_DIR=%s is not a folder\n", sets.c_str());
+    return 2;
+  }
+  if (!sets.empty()) {
     for (const char* map : {"arena2.map", "random512-10-0.map", "maze512-1-0.map", "8room_000.map",
                             "Berlin_0_512.map"})
       cases.push_back(std::make_unique<Case>(movingai_case(sets, map, "")));

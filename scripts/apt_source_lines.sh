@@ -36,7 +36,7 @@ for f in "$etc"/sources.list.d/*.sources; do [ -f "$f" ] && deb822_files+=("$f")
     # One stanza per blank-line-separated block; a stanza with Types including deb gives one
     # line per (URI, suite).
     awk -v cn="$codename" '
-      function flush(   n, u, s, nu, ns, uris, suites, opts) {
+      function flush(   u, s, nu, ns, uris, suites, opts) {
         if (types ~ /(^| )deb( |$)/ && uri != "" && suite != "") {
           opts = (signed != "") ? "[signed-by=" signed "] " : ""
           nu = split(uri, uris, " "); ns = split(suite, suites, " ")
@@ -46,7 +46,6 @@ for f in "$etc"/sources.list.d/*.sources; do [ -f "$f" ] && deb822_files+=("$f")
                 print "deb-src " opts uris[u] " " suites[s] " " comps
         }
         types = uri = suite = comps = signed = ""
-        enabled = 1
       }
       BEGIN { flush() }
       /^[ \t]*#/ { next }

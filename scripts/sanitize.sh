@@ -124,7 +124,6 @@ for part in "${parts[@]}"; do
       # OutputPaths.*, JournalWriter.*, ... tests there parse or write on one thread: the ASan
       # run covers them).
       build-tsan/tests/test_sweep --gtest_brief=1 --gtest_filter='Sweep.*'
-
       ;;
     *) echo "sanitize: unknown part '$part' (asan or tsan)" >&2; exit 2 ;;
   esac

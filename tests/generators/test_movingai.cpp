@@ -102,22 +102,24 @@ std::string file_text(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+std::string to_crlf(const std::string& lf) {
+  std::string crlf;
+  for (char c : lf) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  return crlf;
+}
+
 // Windows line endings, made from a shipped file: the map and its scenarios read as from LF.
 TEST(MovingAi, CrlfParsesLikeLf) {
   const std::string path = testdata::shipped_maps() + "/random512-10-0.map";
   const std::string lf = file_text(path);
   ASSERT_EQ(lf.find('\r'), std::string::npos);
-  std::string crlf;
-  for (char c : lf) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
-  EXPECT_TRUE(parse_map_text(crlf).same_cells(read_map(path)));
-  std::string scen_crlf;
-  for (char c : file_text(path + ".scen"))
-    scen_crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
-  const auto from_crlf = parse_scen_text(scen_crlf);
+  EXPECT_TRUE(parse_map_text(to_crlf(lf)).same_cells(read_map(path)));
+  const auto from_crlf = parse_scen_text(to_crlf(file_text(path + ".scen")));
   const auto from_lf = read_scen(path + ".scen");
   ASSERT_EQ(from_crlf.size(), from_lf.size());
   for (std::size_t i = 0; i < from_lf.size(); ++i) {
     EXPECT_EQ(from_crlf[i].map, from_lf[i].map);
+    EXPECT_EQ(from_crlf[i].start, from_lf[i].start);
     EXPECT_EQ(from_crlf[i].goal, from_lf[i].goal);
     EXPECT_DOUBLE_EQ(from_crlf[i].optimal_length, from_lf[i].optimal_length);
   }

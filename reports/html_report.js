@@ -1,4 +1,4 @@
-// The page of reports/html.py: controls and charts over the report data embedded in
+// The page of reports/html_report.py: controls and charts over the report data embedded in
 // <script id="report-data">. Plotly is embedded before this script; nothing is fetched.
 (function () {
   "use strict";
@@ -190,7 +190,7 @@
     document.getElementById("box-title").textContent = "Distribution: " + title + " \u2014 " + world().title;
     document.getElementById("box-note").textContent = runs
       ? "Every run (metrics: successful runs; planning time: every run). Box: quartiles; whiskers: 1.5 IQR; points beyond; dashed: mean."
-      : "From the report's summaries (give html.py --runs for every run): box p5\u2013p95, line median, whiskers min\u2013max, dashed: mean.";
+      : "From the report's summaries (give html_report.py --runs for every run): box p5\u2013p95, line median, whiskers min\u2013max, dashed: mean.";
     return plot("box-chart", traces, lay);
   }
 

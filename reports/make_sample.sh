@@ -28,7 +28,7 @@ cp "$tmp/svg/ecdf_plan_time.svg" "$out/"
 "$py" reports/plot.py "$out/report.json" "$tmp/pdf" --runs "$tmp/runs.jsonl" --format pdf --dist violin \
   --metrics path_length,turns,plan_time_ns >/dev/null
 cp "$tmp/pdf/dist_uniform_40x40.pdf" "$out/violin_uniform_40x40.pdf"
-"$py" reports/html.py "$out/report.json" "$out/report.html" --runs "$tmp/runs.jsonl"
+"$py" reports/html_report.py "$out/report.json" "$out/report.html" --runs "$tmp/runs.jsonl"
 "$bin" plan --planner astar --planner dijkstra --planner prm --planner rrt --planner birrt \
   --generator uniform --size 20 --density 0.3 --seed 2024 --map-index 0 \
   --json-out "$out/plan.json" --no-ascii >/dev/null

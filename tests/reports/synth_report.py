@@ -19,8 +19,8 @@ import random
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-sys.path.append(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "reports"))  # after the standard library: reports/html.py
-import agvreport  # noqa: E402
+sys.path.append(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "reports"))
+from agvreports import stats  # noqa: E402
 
 METRICS = ["path_length", "path_length_m", "waypoints", "turns", "turn_angle_rad",
            "smoothness_mean", "smoothness_max", "min_clearance", "motion_time_s",
@@ -57,7 +57,7 @@ def _summary(values):
            "p95": None, "max": None, "ci95": [None, None]}
     if n == 0:
         return out
-    m = agvreport.Moments.of(values)
+    m = stats.Moments.of(values)
     s = sorted(values)
 
     def q(p):
@@ -95,7 +95,7 @@ def _paired(cand, base, tol=1e-9):
             excluded += 1
     gm, ci = None, [None, None]
     if logs:
-        m = agvreport.Moments.of(logs)
+        m = stats.Moments.of(logs)
         gm = math.exp(m.mean)
         lo, hi = m.interval()
         if lo is not None:
@@ -187,7 +187,7 @@ def aggregate(spec, records):
                     for r in rs:
                         if r["outcome"] != "success":
                             fails[r["outcome"]] = fails.get(r["outcome"], 0) + 1
-                    lo, hi = agvreport.wilson(len(succ), len(rs))
+                    lo, hi = stats.wilson(len(succ), len(rs))
                     planners.append({
                         "planner": p["label"], "name": p["name"], "runs": len(rs),
                         "successes": len(succ), "success_rate": len(succ) / len(rs),

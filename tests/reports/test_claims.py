@@ -19,9 +19,9 @@ import tempfile
 ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", ".."))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(ROOT, "tests", "reports"))
-sys.path.append(os.path.join(ROOT, "reports"))  # after the standard library: reports/html.py
+sys.path.append(os.path.join(ROOT, "reports"))
 import synth_report  # noqa: E402
-import agvreport  # noqa: E402
+from agvreports import stats  # noqa: E402
 
 PY = sys.executable
 CHECK = os.path.join(ROOT, "reports", "check_claims.py")
@@ -114,7 +114,7 @@ r = verdict_is(res, "000-XII-hma-vs-astar-length", "reproduced", "inside our per
 x = r["paper_setup"]
 pairs = [v for v in by_map(r1).values() if v["hma_star"]["outcome"] == "success" and v["astar"]["outcome"] == "success"]
 ratios = [v["hma_star"]["metrics"]["path_length"] / v["astar"]["metrics"]["path_length"] for v in pairs]
-m = agvreport.Moments.of([math.log(q) for q in ratios])
+m = stats.Moments.of([math.log(q) for q in ratios])
 lo, hi = m.interval()
 ok(abs(x["estimate"] - math.exp(m.mean)) < 1e-9 and abs(x["lo"] - math.exp(lo)) < 1e-9
    and abs(x["hi"] - math.exp(hi)) < 1e-9 and x["pairs"] == len(ratios),

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# reports/html.py (reports/README.md "Interactive HTML report"):
-#  1. bad input exits 2 with a message and writes nothing (an existing file that html.py did not
-#     write is never overwritten);
+# reports/html_report.py (reports/README.md "Interactive HTML report"):
+#  1. bad input exits 2 with a message and writes nothing (an existing file that html_report.py
+#     did not write is never overwritten);
 #  2. the page of a 24-planner synthetic sweep with its journal, and of tests/reports/tiny_report.json
 #     without one, is drawn by headless Chromium with the network cut off: every chart drawn
 #     (plotly's SVG in the DOM after the script ran, one trace per chosen planner), no error and
@@ -26,7 +26,7 @@ if ! command -v chromium >/dev/null || ! "$py" -c 'import plotly' 2>/dev/null; t
   echo "SKIP: chromium or python3-plotly missing and not installable (apt-get install chromium python3-plotly)"
   exit 77
 fi
-html="$root/reports/html.py"
+html="$root/reports/html_report.py"
 
 expect2() {  # NAME PATTERN COMMAND...
   local name=$1 pattern=$2
@@ -45,28 +45,28 @@ expect2() {  # NAME PATTERN COMMAND...
 tiny="$root/tests/reports/tiny_report.json"
 printf '{ not json' >"$work/notjson.json"
 echo "my notes" >"$work/notes.html"
-expect2 "html.py not JSON" "not valid JSON" "$py" "$html" "$work/notjson.json" "$work/a.html"
-expect2 "html.py unknown planner" "no planner 'nope'" "$py" "$html" "$tiny" "$work/a.html" --planners astar,nope
-expect2 "html.py missing journal" "no such file" "$py" "$html" "$tiny" "$work/a.html" --runs "$work/missing.jsonl"
-[ -e "$work/a.html" ] && bad "html.py wrote a page for bad input" || ok "no page for bad input"
-expect2 "html.py will not overwrite a user's file" "refusing to overwrite" "$py" "$html" "$tiny" "$work/notes.html"
+expect2 "html_report.py not JSON" "not valid JSON" "$py" "$html" "$work/notjson.json" "$work/a.html"
+expect2 "html_report.py unknown planner" "no planner 'nope'" "$py" "$html" "$tiny" "$work/a.html" --planners astar,nope
+expect2 "html_report.py missing journal" "no such file" "$py" "$html" "$tiny" "$work/a.html" --runs "$work/missing.jsonl"
+[ -e "$work/a.html" ] && bad "html_report.py wrote a page for bad input" || ok "no page for bad input"
+expect2 "html_report.py will not overwrite a user's file" "refusing to overwrite" "$py" "$html" "$tiny" "$work/notes.html"
 [ "$(cat "$work/notes.html")" = "my notes" ] && ok "the user's file is untouched" || bad "notes.html changed"
 
 # Pages.
 "$py" "$root/tests/reports/synth_many.py" "$work/many.json" "$work/many.jsonl" 24 || bad "synth_many.py"
 "$py" "$root/tests/reports/synth_many.py" "$work/other.json" "$work/other.jsonl" 3 || bad "synth_many.py 3"
-expect2 "html.py journal of another sweep" "planner 'planner_.*' is not in the report|cell .* is not in the report" \
+expect2 "html_report.py journal of another sweep" "planner 'planner_.*' is not in the report|cell .* is not in the report" \
   "$py" "$html" "$tiny" "$work/a.html" --runs "$work/other.jsonl"
 if "$py" "$html" "$work/many.json" "$work/many.html" --runs "$work/many.jsonl" >"$work/out.txt" 2>"$work/err.txt"; then
-  ok "html.py with --runs: $(cat "$work/out.txt")"
+  ok "html_report.py with --runs: $(cat "$work/out.txt")"
 else
-  bad "html.py with --runs: $(cat "$work/err.txt")"
+  bad "html_report.py with --runs: $(cat "$work/err.txt")"
 fi
 if "$py" "$html" "$tiny" "$work/tiny.html" --uncompressed >"$work/out.txt" 2>"$work/err.txt" \
    && "$py" "$html" "$tiny" "$work/tiny.html" >/dev/null 2>&1; then
-  ok "html.py without --runs, --uncompressed (and over its own page): $(cat "$work/out.txt")"
+  ok "html_report.py without --runs, --uncompressed (and over its own page): $(cat "$work/out.txt")"
 else
-  bad "html.py without --runs: $(cat "$work/err.txt")"
+  bad "html_report.py without --runs: $(cat "$work/err.txt")"
 fi
 for f in many tiny; do
   # Outside the embedded scripts (plotly.js quotes web addresses in its documentation strings):

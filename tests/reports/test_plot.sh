@@ -7,7 +7,7 @@
 #     a message; --planners / --metrics filters (an unknown name exits 2 naming it), --format
 #     pdf and svg, --runs (ECDF, box and violin plots from every run) on a synthetic 24-planner
 #     sweep (tests/reports/synth_many.py): every planner in every legend, no legend or note over
-#     a panel or another note (plot_style.layout_problems, itself checked on a figure made to
+#     a panel or another note (agvreports/layout.py layout_problems, itself checked on a figure made to
 #     overlap), distinct colour and marker per planner, log axes labelled at both ends. Skipped (exit 77, ctest SKIP_RETURN_CODE) only when Debian's /usr/bin/python3
 #     cannot import matplotlib (CI installs python3-matplotlib, so it never skips there).
 # Usage: test_plot.sh REPO_ROOT
@@ -187,19 +187,21 @@ nm=$(ls "$fo"/metrics_movingai_room*.map_*.png 2>/dev/null | wc -l)
 grep -q "layout:" "$work/files.err" && bad "map files: $(grep layout: "$work/files.err")" || ok "map files: no layout problem reported"
 "$py" - "$root" "$work/files.json" <<'PY' && ok "map files: five panels in the grid pictures, none empty" || bad "map files: panel layout"
 import json, sys
-sys.path.append(sys.argv[1] + "/reports")  # after the standard library: reports/html.py
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.append(sys.argv[1] + "/reports")
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-import plot, plot_report
-rep = plot_report.Report(json.load(open(sys.argv[2])))
+from agvreports import plots
+from agvreports.grouping import Report
+rep = Report(json.load(open(sys.argv[2])))
 assert len(rep.worlds) == 5, rep.worlds.keys()
 assert all(len(cells) == 1 for cells in rep.worlds.values())
 captured = []
 class Saver:
     def save(self, fig, stem):
         captured.append((stem, [ax for ax in fig.axes if ax.get_visible() and ax.get_title()]))
-for draw in (plot.plot_success, plot.plot_time):
+for draw in (plots.plot_success, plots.plot_time):
     draw(plt, Saver(), rep)
 for stem, axes in captured:
     assert len(axes) == 5, (stem, len(axes))

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Checks of reports/plot_style.py (run by tests/reports/test_plot.sh):
+"""Checks of the pictures' style and layout (reports/agvreports: style, log_axes, layout; run by
+tests/reports/test_plot.sh):
   - the palette: the first 24 planners differ in colour and in marker, no two of 120 alike;
   - log axes: limits on labelled ticks just outside the data, on many random ranges, and the
     paired plots' ratio ticks never closer than their spacing;
@@ -17,8 +18,8 @@ import sys
 
 sys.dont_write_bytecode = True
 root = sys.argv[1]
-sys.path.append(os.path.join(root, "reports"))  # after the standard library: reports/html.py
-import plot_style  # noqa: E402
+sys.path.append(os.path.join(root, "reports"))
+from agvreports import figures, layout, log_axes, paired, plots, style  # noqa: E402
 
 failures = []
 
@@ -31,7 +32,7 @@ def check(cond, what):
 
 # Palette.
 labels = ["base"] + [f"p{i}" for i in range(1, 121)]
-st = plot_style.Style(labels, "base")
+st = style.Style(labels, "base")
 first = labels[1:25]
 check(len({st.colour[l] for l in first}) == 24, "24 planners: 24 colours")
 check(len({(st.marker[l], st.fill[l]) for l in labels[:30]}) == 30, "30 planners: 30 markers")
@@ -44,19 +45,18 @@ rng = random.Random(7)
 for _ in range(2000):
     lo = 10 ** rng.uniform(-4, 6)
     hi = lo * 10 ** rng.uniform(0.01, 7)
-    a, b, ticks = plot_style.log_ladder_ticks(lo, hi)
+    a, b, ticks = log_axes.log_ladder_ticks(lo, hi)
     ok = a <= lo * (1 + 1e-9) and b >= hi * (1 - 1e-9) and ticks[0] == a and ticks[-1] == b \
         and len(ticks) <= 9 and b / a <= hi / lo * 25
     if not ok:
         check(False, f"log ticks for [{lo:g}, {hi:g}]: {a:g} {b:g} {ticks}")
         break
-import plot  # noqa: E402
 for _ in range(500):
     lo = 10 ** rng.uniform(-2.5, 0)
     hi = 10 ** rng.uniform(0, 3)
-    a = max([t for t in plot.RATIO_LADDER if t <= lo] or [lo])
-    b = min([t for t in plot.RATIO_LADDER if t >= hi] or [hi])
-    ticks = plot.spaced_ticks([t for t in plot.RATIO_LADDER if a <= t <= b], a, b, keep=1.0)
+    a = max([t for t in paired.RATIO_LADDER if t <= lo] or [lo])
+    b = min([t for t in paired.RATIO_LADDER if t >= hi] or [hi])
+    ticks = log_axes.spaced_ticks([t for t in paired.RATIO_LADDER if a <= t <= b], a, b, keep=1.0)
     gap = math.log(b / a) / 7
     close = [(x, y) for x, y in zip(ticks, ticks[1:]) if math.log(y / x) < gap * 0.999
              and not (1.0 in (x, y))]
@@ -65,31 +65,31 @@ for _ in range(500):
         break
 
 # The layout check.
-plt = plot_style.setup_matplotlib("test_plot_style.py")
+plt = figures.setup_matplotlib("test_plot_style.py")
 fig, axes = plt.subplots(1, 2, figsize=(6, 3))
 for ax in axes:
     ax.plot([0, 1], [0, 1], label="x")
 fig.legend(handles=[st.handle("p1")], loc="center")  # over the panels
-check(any("legend overlaps panel" in p for p in plot_style.layout_problems(fig)),
+check(any("legend overlaps panel" in p for p in layout.layout_problems(fig)),
       "a legend over a panel is found")
 plt.close(fig)
 fig, axes = plt.subplots(1, 2, figsize=(6, 3))
 fig.tight_layout()
-leg = plot_style.side_legend(fig, st, labels[:25])
+leg = layout.side_legend(fig, st, labels[:25])
 fig.text(0.99, 0.9, "a note over the legend")
-probs = plot_style.layout_problems(fig)
+probs = layout.layout_problems(fig)
 check(any("legend overlaps note" in p for p in probs), f"a note over the legend is found ({probs})")
 plt.close(fig)
 fig, axes = plt.subplots(2, 2, figsize=(6, 5))
 for ax in axes.flat:
-    plot_style.log_ticks_both_ends(ax, "y", [0.37, 913.0])
+    log_axes.log_ticks_both_ends(ax, "y", [0.37, 913.0])
     ax.plot([0, 1], [0.37, 913.0])
 fig.tight_layout()
-leg = plot_style.side_legend(fig, st, labels[:25])
-plot_style.note_below_legend(fig, leg, "a note\nunder the legend")
-probs = plot_style.layout_problems(fig)
+leg = layout.side_legend(fig, st, labels[:25])
+layout.note_below_legend(fig, leg, "a note\nunder the legend")
+probs = layout.layout_problems(fig)
 check(not probs, f"side legend and note: {probs}")
-check(len(plot_style.legend_entries(fig)) == 25, "25 legend entries")
+check(len(layout.legend_entries(fig)) == 25, "25 legend entries")
 lo, hi = axes[0][0].get_ylim()
 ticks = axes[0][0].get_yticks()
 check(abs(lo - 0.2) < 1e-12 and abs(hi - 1000) < 1e-9 and ticks[0] == lo and ticks[-1] == hi,
@@ -98,24 +98,23 @@ plt.close(fig)
 
 # Every planner in each legend of the real pictures (a saver that only records).
 if len(sys.argv) > 2:
-    import agvreport
-    import plot_dist
-    from plot_report import Report
+    from agvreports import dist, report_io
+    from agvreports.grouping import Report
 
-    class Recorder(plot_style.Saver):
+    class Recorder(figures.Saver):
         def save(self, fig, stem):
-            self.problems += [(stem, p) for p in plot_style.layout_problems(fig)]
-            self.entries[stem] = plot_style.legend_entries(fig)
+            self.problems += [(stem, p) for p in layout.layout_problems(fig)]
+            self.entries[stem] = layout.legend_entries(fig)
             plt.close(fig)
 
-    rep = Report(agvreport.load_report(sys.argv[2]), metrics=["path_length", "plan_time_ns"])
+    rep = Report(report_io.load_report(sys.argv[2]), metrics=["path_length", "plan_time_ns"])
     rec = Recorder(plt, "/nonexistent", 72, False)
     key = rep.ordered_worlds()[0]
-    plot.plot_metrics(plt, rec, rep, key)
-    plot.plot_paired(plt, rec, rep, key)
-    plot_dist.plot_distributions(plt, rec, rep, key, None)
-    plot.plot_success(plt, rec, rep)
-    plot.plot_time(plt, rec, rep)
+    plots.plot_metrics(plt, rec, rep, key)
+    paired.plot_paired(plt, rec, rep, key)
+    dist.plot_distributions(plt, rec, rep, key, None)
+    plots.plot_success(plt, rec, rep)
+    plots.plot_time(plt, rec, rep)
     for stem, entries in rec.entries.items():
         want = [l for l in rep.labels if not stem.startswith("paired") or l != rep.baseline]
         names = [e.replace(" (baseline)", "") for e in entries]

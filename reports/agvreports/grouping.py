@@ -1,67 +1,27 @@
-"""An `agvbench run` report regrouped for the pictures and the summary (plot.py, plot_dist.py,
-summary_md.py): worlds (generator, size) -> density -> cell, the planners and metrics chosen
-with --planners / --metrics, and every planner's style. A map file of a map source (`movingai`,
-`image`) is a world of its own, named by its cell (`movingai/arena2.map`), whose one density is
-its obstacle share: files of one size are different maps, not points of one curve over density.
+"""An `agvbench run` report grouped for the pictures, summary.md and the HTML page: worlds
+(generator, size) -> density -> cell, the planners and metrics chosen with --planners /
+--metrics, and every planner's style. A map file of a map source (`movingai`, `image`) is a
+world of its own, named by its cell (`movingai/arena2.map`), whose one density is its obstacle
+share: files of one size are different maps, not points of one curve over density.
 Standard library only (the style's colours are plain strings; matplotlib is imported where a
 picture is drawn).
 """
 
-import math
 import re
 
-import agvreport
-from agvreport import ReportError
-from plot_style import Style
-
-# Metric names -> (unit, short title). Order = panel order. Times are shown in microseconds
-# (the JSON keeps nanoseconds in the fields named *_ns).
-METRIC_LABELS = {
-    "path_length": ("cells", "path length"),
-    "path_length_m": ("m", "path length (m)"),
-    "optimality_ratio": ("length / optimum", "optimality ratio"),
-    "waypoints": ("waypoints", "waypoints"),
-    "max_turn_rad": ("rad", "largest turn"),
-    "any_angle_ratio": ("ratio", "length / any-angle optimum"),
-    "scen_ratio": ("ratio", "length / MovingAI scenario optimum"),
-    "turns": ("turns", "turns"),
-    "turn_angle_rad": ("rad", "turn angle sum"),
-    "smoothness_mean": ("rad / cell", "mean curvature proxy"),
-    "smoothness_max": ("rad / cell", "max curvature proxy"),
-    "min_clearance": ("cells", "min clearance"),
-    "min_clearance_m": ("m", "min clearance (m)"),
-    "motion_time_s": ("s", "motion time (eq. 5.2e)"),
-    "search_expansions": ("nodes", "search expansions"),
-    "collision_checks": ("checks", "collision checks"),
-}
-TIME = "plan_time_ns"
-TIME_LABEL = ("\u00b5s", "planning time")
-PAIRED_ORDER = ["path_length", "motion_time_s", "waypoints", "turns", "turn_angle_rad",
-                "collision_checks"]
+from agvreports.cells import cell_key, comparison_of, paired_of, planner_of, summary_of
+from agvreports.metrics import METRIC_LABELS, PAIRED_ORDER, TIME
+from agvreports.numeric import finite
+from agvreports.report_io import ReportError, baseline_label, planner_order
+from agvreports.style import Style
 
 
 def safe_name(text):
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", text).strip("_") or "x"
 
 
-def finite(v):
-    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
-
-
-def nan_or(v):
-    return float(v) if finite(v) else float("nan")
-
-
-def metric_title(name):
-    if name == TIME:
-        return TIME_LABEL[1]
-    return METRIC_LABELS.get(name, ("", name.replace("_", " ")))[1]
-
-
-def metric_unit(name):
-    if name == TIME:
-        return TIME_LABEL[0]
-    return METRIC_LABELS.get(name, ("", ""))[0]
+def density_text(d):
+    return f"{d:g}"
 
 
 def split_list(values):
@@ -81,8 +41,8 @@ class Report:
     def __init__(self, doc, planners=None, metrics=None):
         self.doc = doc
         self.config = doc.get("config", {})
-        self.all_labels = agvreport.planner_order(doc)
-        self.baseline = agvreport.baseline_label(doc)
+        self.all_labels = planner_order(doc)
+        self.baseline = baseline_label(doc)
         # Colours follow the config's order, so a planner keeps its look under --planners.
         self.style = Style(self.all_labels, self.baseline)
         present = {p["planner"] for c in doc["cells"] for p in c["planners"]}
@@ -135,29 +95,26 @@ class Report:
         g, w, h = key
         return f"{safe_name(g)}_{w}x{h}"
 
-    @staticmethod
-    def cell_key(cell):
-        if isinstance(cell.get("cell"), str):
-            return cell["cell"]
-        return f"{cell['generator']}/{int(cell['width'])}x{int(cell['height'])}/{float(cell['density']):g}"
-
-    @staticmethod
-    def planner(cell, label):
-        for p in cell["planners"]:
-            if p["planner"] == label:
-                return p
-        return None
-
-    @staticmethod
-    def paired(cell, label):
-        for c in cell["paired"]:
-            if c["planner"] == label:
-                return c
-        return None
+    # The lookups in one cell, as methods for the drawing code's convenience.
+    cell_key = staticmethod(cell_key)
+    planner = staticmethod(planner_of)
+    paired = staticmethod(paired_of)
+    summary_of = staticmethod(summary_of)
+    comparison_of = staticmethod(comparison_of)
 
     def present(self, cells):
         """The chosen planners that ran in any of these cells."""
         return [l for l in self.labels if any(self.planner(c, l) for c in cells)]
+
+    def paired_planners(self, cells):
+        """The chosen planners, the baseline aside, paired in any cell of {density: cell}."""
+        return [l for l in self.labels if l != self.baseline
+                and any(self.paired(c, l) for c in cells.values())]
+
+    def world_grid(self):
+        """(generator index, size index) of every world the sweep has, in grid order."""
+        return [(gi, si) for gi, g in enumerate(self.generators)
+                for si, (w, h) in enumerate(self.sizes) if self.worlds.get((g, w, h))]
 
     def wanted(self, name):
         return self.metric_filter is None or name in self.metric_filter
@@ -214,28 +171,11 @@ class Report:
                         return True
         return False
 
+    def metrics_with_time(self):
+        """metric_names(), then planning time when the report has it and it is chosen."""
+        return self.metric_names() + ([TIME] if self.has_time() and self.wanted(TIME) else [])
+
     def has_time(self):
         return any(isinstance((p.get("timing") or {}).get(TIME), dict)
                    for cells in self.worlds.values() for c in cells.values() for p in c["planners"])
 
-    @staticmethod
-    def summary_of(p, name):
-        """A planner cell's SUMMARY of a metric, or of planning time."""
-        if name == TIME:
-            t = (p.get("timing") or {}).get(TIME)
-            return t if isinstance(t, dict) else None
-        s = p["metrics"].get(name)
-        return s if isinstance(s, dict) else None
-
-    @staticmethod
-    def comparison_of(c, name):
-        if name == TIME:
-            comp = (c.get("timing") or {}).get(TIME)
-        else:
-            comp = c["metrics"].get(name)
-        return comp if isinstance(comp, dict) else None
-
-
-def scale_of(name):
-    """Factor from the JSON's unit to the shown one: ns -> µs for planning time."""
-    return 1e-3 if name == TIME else 1.0

@@ -9,10 +9,12 @@ mean). Metrics are over successful runs, planning time over every run (reports/S
 
 import math
 
-from agvreport import density_text
-from plot_report import TIME, finite, metric_title, metric_unit, scale_of
-from plot_style import (log_ticks_both_ends, log_ladder_ticks, note_below_legend, panel_grid,
-                        side_legend)
+from agvreports.figures import finish
+from agvreports.grouping import density_text
+from agvreports.layout import panel_grid
+from agvreports.log_axes import log_ladder_ticks, log_ticks_both_ends
+from agvreports.metrics import TIME, metric_title, metric_unit, scale_of
+from agvreports.numeric import finite, nan_or
 
 BOX_GROUP = 0.8  # share of a density's slot the planners' boxes take
 
@@ -24,10 +26,6 @@ def _box_from_summary(s, scale):
     return {"med": s["median"] * scale, "q1": s["p5"] * scale, "q3": s["p95"] * scale,
             "whislo": s["min"] * scale, "whishi": s["max"] * scale,
             "mean": nan_or(s.get("mean")) * scale, "fliers": []}
-
-
-def nan_or(v):
-    return float(v) if finite(v) else float("nan")
 
 
 def _box_from_values(values):
@@ -76,7 +74,7 @@ def plot_distributions(plt, saver, rep, key, runs, kind="box"):
     cells = rep.worlds[key]
     ds = sorted(cells)
     labels = rep.present(cells.values())
-    names = rep.metric_names() + ([TIME] if rep.has_time() and rep.wanted(TIME) else [])
+    names = rep.metrics_with_time()
     if not labels or not names:
         return
     n = len(labels)
@@ -150,12 +148,10 @@ def plot_distributions(plt, saver, rep, key, runs, kind="box"):
         how = "box: quartiles, whiskers 1.5 IQR, dots beyond; marker: mean"
     else:
         how = "from the report's summaries: box p5\u2013p95, line median, whiskers min\u2013max; marker: mean"
-    fig.suptitle(f"{rep.world_title(key)}: distribution per planner and density ({how})",
-                 fontsize=11, fontweight="bold", x=0.0, ha="left")
-    fig.tight_layout(rect=(0, 0, 1, 0.95))
-    legend = side_legend(fig, rep.style, labels, line=False)
-    note_below_legend(fig, legend, "Metrics: successful runs.\nPlanning time: every run,\nfailures included (\u00b5s).")
-    saver.save(fig, f"dist_{rep.world_file(key)}")
+    finish(fig, rep, labels, f"{rep.world_title(key)}: distribution per planner and density ({how})",
+           f"dist_{rep.world_file(key)}", saver,
+           note="Metrics: successful runs.\nPlanning time: every run,\nfailures included (\u00b5s).",
+           line=False)
 
 
 def plot_ecdf(plt, saver, rep, runs):
@@ -164,9 +160,7 @@ def plot_ecdf(plt, saver, rep, runs):
     if not rep.wanted(TIME):
         return
     gens, sizes = rep.generators, rep.sizes
-    present = [(gi, si) for gi, g in enumerate(gens) for si, (w, h) in enumerate(sizes)
-               if rep.worlds.get((g, w, h))]
-    fig, panels = panel_grid(plt, len(gens), len(sizes), present, 3.6, 3.0, sharey=True)
+    fig, panels = panel_grid(plt, len(gens), len(sizes), rep.world_grid(), 3.6, 3.0, sharey=True)
     drawn = []
     for gi, si, ax, left, _ in panels:
         g, (w, h) = gens[gi], sizes[si]
@@ -197,9 +191,6 @@ def plot_ecdf(plt, saver, rep, runs):
     if not drawn:
         plt.close(fig)
         return
-    fig.suptitle("ECDF of planning time per planner (every run, failures included; the "
-                 "world's densities pooled; marker at the median)", fontsize=11, fontweight="bold",
-                 x=0.0, ha="left")
-    fig.tight_layout(rect=(0, 0, 1, 0.95))
-    side_legend(fig, rep.style, [l for l in rep.labels if l in drawn])
-    saver.save(fig, "ecdf_plan_time")
+    finish(fig, rep, [l for l in rep.labels if l in drawn], "ECDF of planning time per planner "
+           "(every run, failures included; the world's densities pooled; marker at the median)",
+           "ecdf_plan_time", saver)

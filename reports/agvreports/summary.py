@@ -8,9 +8,10 @@ import math
 import os
 import statistics
 
-import agvreport
-from agvreport import Moments, density_text, moments_from_summary
-from plot_report import METRIC_LABELS, TIME, finite, metric_title, metric_unit
+from agvreports.grouping import density_text
+from agvreports.metrics import TIME, metric_title, metric_unit
+from agvreports.numeric import finite
+from agvreports.stats import Moments, moments_from_summary, wilson
 
 DASH = "\u2013"
 # Columns of the per-world tables when --metrics does not choose them (the rest: the JSON,
@@ -59,7 +60,7 @@ def success_text(successes, runs, ci=None):
     if not runs:
         return DASH
     text = f"{100.0 * successes / runs:.1f}"
-    lo, hi = ci if ci else agvreport.wilson(successes, runs)
+    lo, hi = ci if ci else wilson(successes, runs)
     if finite(lo) and finite(hi):
         text += f" [{lo * 100:.1f}, {hi * 100:.1f}]"
     return text
@@ -185,7 +186,7 @@ def world_tables(rep, key):
     names = rep.paired_names()
     if not rep.metric_filter:
         names = [n for n in PAIRED_METRICS if n in names]
-    others = [l for l in rep.labels if l != rep.baseline and any(rep.paired(c, l) for c in cells.values())]
+    others = rep.paired_planners(cells)
     if names and others:
         out.append(f"Paired against `{rep.baseline}` on the same maps: geometric mean of planner / "
                    f"`{rep.baseline}` (below 1: smaller) and the Wilcoxon signed-rank p-value; "

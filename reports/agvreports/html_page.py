@@ -1,44 +1,19 @@
-#!/usr/bin/python3
-"""An interactive, self-contained HTML report of an `agvbench run` report.
-
-    /usr/bin/python3 reports/html.py REPORT.json OUT.html [--runs RUNS.jsonl] [--planners A,B]
-
-One file that loads nothing from the network: the report's numbers, the page's script
-(reports/html_report.js) and plotly.js (Debian's python3-plotly ships it; embedded whole,
-gzip-compressed unless --uncompressed) are all inside it. Open it in any browser, offline.
-On the page: choose the cell group (generator and size), the density (or all), the metric
-and the planners; it draws
-  - box plots per planner and density: from every run with --runs (quartiles, 1.5 IQR
-    whiskers, points beyond), else from the report's summaries (box p5..p95, whiskers min..max);
-  - success rates with their Wilson 95% intervals;
-  - paired ratios to the baseline on the same maps (geometric mean, 95% interval, Wilcoxon p,
-    wins/ties/losses) for the chosen metric;
-  - a table of the chosen metric per planner and density.
-Planning time is shown in microseconds (the JSON keeps nanoseconds).
-
-Exit codes: 0 written, 1 cannot write or plotly missing, 2 bad input (report, journal, unknown
-planner, OUT.html an existing file that is not an earlier html.py page).
+"""The page of html_report.py: the report's numbers as one JSON object, and the self-contained
+HTML file around them (the page's script and style from reports/html_report.js and .css, and
+plotly.js from Debian's python3-plotly, all inline: the page loads nothing).
 """
 
-import argparse
 import base64
 import gzip
 import json
-import math
 import os
-import sys
-import tempfile
 
-sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-HERE = os.path.dirname(os.path.abspath(__file__))
-# This file's name hides the standard library's `html` package (plotly and matplotlib import
-# html.entities): its folder goes last on the path, after the standard library.
-sys.path[:] = [p for p in sys.path if os.path.abspath(p or ".") != HERE] + [HERE]
-import agvreport  # noqa: E402
-import agvruns  # noqa: E402
-from agvreport import ReportError  # noqa: E402
-from plot_report import METRIC_LABELS, TIME, Report, finite, split_list  # noqa: E402
+from agvreports.metrics import TIME, metric_title, metric_unit, scale_of
+from agvreports.numeric import finite
 
+ASSETS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # reports/: the page's .js, .css
+# The mark of a page this script wrote (under its former name html.py, which the mark keeps):
+# only such a file is overwritten.
 MARK = "<!-- agvbench html.py report -->"
 PLOTLY_JS = "/usr/share/python3-plotly/plotly.js"  # Debian python3-plotly
 
@@ -89,11 +64,9 @@ def comparison(c):
 
 def page_data(rep, runs):
     """Everything the page draws, as one JSON object."""
-    metrics = rep.metric_names()
-    if rep.has_time():
-        metrics = metrics + [TIME]
-    labels = {m: list(METRIC_LABELS.get(m, ("", m.replace("_", " ")))) for m in metrics}
-    labels[TIME] = ["\u00b5s", "planning time"]
+    metrics = rep.metrics_with_time()
+    labels = {m: [metric_unit(m), metric_title(m)] for m in metrics}
+    labels[TIME] = [metric_unit(TIME), metric_title(TIME)]
     planners = [{"label": l, "colour": rep.style.colour[l], "marker": rep.style.marker[l],
                  "open": rep.style.fill[l] == "none"} for l in rep.labels]
     worlds = []
@@ -111,7 +84,7 @@ def page_data(rep, runs):
                     "runs": p.get("runs"), "successes": p.get("successes"),
                     "ci": [rounded(v) for v in (p.get("success_ci95") or [None, None])],
                     "failures": p.get("failures") or {},
-                    "m": {m: summary(rep.summary_of(p, m), 1e-3 if m == TIME else 1.0) for m in metrics},
+                    "m": {m: summary(rep.summary_of(p, m), scale_of(m)) for m in metrics},
                 }
                 c = rep.paired(cell, label)
                 if c is not None:
@@ -119,7 +92,7 @@ def page_data(rep, runs):
                                  if rep.comparison_of(c, m)}
                 if runs is not None:
                     ck = rep.cell_key(cell)
-                    rv[label] = {m: [rounded(v * (1e-3 if m == TIME else 1.0), 4)
+                    rv[label] = {m: [rounded(v * scale_of(m), 4)
                                      for v in runs.values(ck, label, m)] for m in metrics}
             wc.append({"density": d, "cell": rep.cell_key(cell), "maps": cell.get("maps"),
                        "planners": ps, "paired": pr, "runs": rv if runs is not None else None})
@@ -146,7 +119,7 @@ def plotly_and_app(js_plotly, js_app, compress):
         "(async function () {\n"
         "  if (typeof DecompressionStream === 'undefined') {\n"
         "    throw new Error('this browser cannot unpack the embedded plotly.js (no DecompressionStream): "
-        "write the page with html.py --uncompressed');\n"
+        "write the page with html_report.py --uncompressed');\n"
         "  }\n"
         "  const b64 = document.getElementById('plotly-gz').textContent;\n"
         "  const bin = atob(b64), bytes = new Uint8Array(bin.length);\n"
@@ -166,7 +139,7 @@ def build_page(data, js_app, js_plotly, title, compress=True):
     esc = lambda s: (s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;"))
     # "</" must not end the script elements early; JSON is otherwise valid JavaScript.
     blob = json.dumps(data, separators=(",", ":"), allow_nan=False).replace("</", "<\\/")
-    with open(os.path.join(HERE, "html_report.css"), encoding="utf-8") as f:
+    with open(os.path.join(ASSETS, "html_report.css"), encoding="utf-8") as f:
         css = f.read()
     return "\n".join([
         "<!DOCTYPE html>", MARK, "<html lang=\"en\"><head><meta charset=\"utf-8\">",
@@ -192,85 +165,3 @@ def build_page(data, js_app, js_plotly, title, compress=True):
     ] + plotly_and_app(js_plotly, js_app, compress) + [
 
         "</body></html>", ""])
-
-
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[2].strip(),
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 2)[2])
-    ap.add_argument("report", help="report JSON written by `agvbench run`")
-    ap.add_argument("out", help="the HTML file to write (an existing one only if html.py wrote it)")
-    ap.add_argument("--runs", metavar="RUNS.jsonl",
-                    help="the sweep's per-run journal (`run --runs-out`): box plots of every run")
-    ap.add_argument("--planners", action="append", metavar="A,B",
-                    help="only these planners (labels; comma-separated or repeated)")
-    ap.add_argument("--uncompressed", action="store_true",
-                    help="embed plotly.js as plain text (8.7 MB) instead of gzip + base64 (2.5 MB, "
-                         "unpacked by the browser's DecompressionStream: Chromium 80+, Firefox 113+, "
-                         "Safari 16.4+)")
-    args = ap.parse_args(argv)
-    try:
-        doc = agvreport.load_report(args.report)
-        if not doc["cells"]:
-            raise ReportError("the report has no cells (nothing was swept)")
-    except ReportError as e:
-        sys.stderr.write(f"html.py: {args.report}: {e}\n")
-        return agvreport.BAD_INPUT
-    try:
-        rep = Report(doc, split_list(args.planners))
-    except ReportError as e:
-        sys.stderr.write(f"html.py: {e}\n")
-        return agvreport.BAD_INPUT
-    runs = None
-    if args.runs:
-        try:
-            runs = agvruns.load_runs(args.runs, doc)
-        except ReportError as e:
-            sys.stderr.write(f"html.py: {args.runs}: {e}\n")
-            return agvreport.BAD_INPUT
-    out = args.out
-    if os.path.isdir(out):
-        sys.stderr.write(f"html.py: {out}: is a directory, expected the HTML file to write\n")
-        return agvreport.BAD_INPUT
-    if os.path.exists(out):
-        # Never overwrite a user's file by mistake: only a page this script wrote.
-        try:
-            with open(out, "r", encoding="utf-8", errors="replace") as f:
-                head = f.read(200)
-        except OSError as e:
-            sys.stderr.write(f"html.py: {out}: cannot read the existing file: {e.strerror}\n")
-            return agvreport.BAD_INPUT
-        if MARK not in head:
-            sys.stderr.write(f"html.py: {out}: exists and is not a report html.py wrote; refusing "
-                             "to overwrite it (delete it or choose another name)\n")
-            return agvreport.BAD_INPUT
-    js = plotly_js()
-    if js is None:
-        sys.stderr.write("html.py: plotly.js not found: install Debian's python3-plotly "
-                         "(apt-get install python3-plotly)\n")
-        return 1
-    with open(os.path.join(HERE, "html_report.js"), encoding="utf-8") as f:
-        app = f.read()
-    data = page_data(rep, runs)
-    page = build_page(data, app, js, f"agvbench: {data['name']}", not args.uncompressed)
-    folder = os.path.dirname(os.path.abspath(out))
-    try:  # atomically: a temporary file beside OUT, then a rename
-        fd, tmp = tempfile.mkstemp(prefix=".html-", suffix=".tmp", dir=folder)
-        try:
-            with os.fdopen(fd, "w", encoding="utf-8") as f:
-                f.write(page)
-            os.chmod(tmp, 0o644)
-            os.replace(tmp, out)
-        except BaseException:
-            os.unlink(tmp)
-            raise
-    except OSError as e:
-        sys.stderr.write(f"html.py: cannot write {out}: {e.strerror}\n")
-        return 1
-    print(f"{out} ({os.path.getsize(out) / 1e6:.1f} MB, {len(rep.labels)} planners, "
-          f"{len(data['worlds'])} cell groups{', per-run box plots' if runs else ''})")
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

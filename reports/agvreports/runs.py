@@ -4,15 +4,12 @@ grouped by cell and planner. Standard library only.
 """
 
 import json
-import math
 
-from agvreport import ReportError
+from agvreports.cells import cell_key
+from agvreports.numeric import finite
+from agvreports.report_io import ReportError
 
 JOURNAL_VERSION = 1  # engine/run_record.h kJournalVersion
-
-
-def _number(v):
-    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
 
 
 class Runs:
@@ -28,12 +25,9 @@ class Runs:
     def values(self, cell, planner, metric):
         rows = sorted(self.by.get(cell, {}).get(planner, []), key=lambda r: r[0])
         if metric == "plan_time_ns":
-            return [float(r[3]) for r in rows if _number(r[3])]
+            return [float(r[3]) for r in rows if finite(r[3])]
         return [float(r[2][metric]) for r in rows
-                if r[1] == "success" and _number(r[2].get(metric))]
-
-    def outcomes(self, cell, planner):
-        return [r[1] for r in self.by.get(cell, {}).get(planner, [])]
+                if r[1] == "success" and finite(r[2].get(metric))]
 
 
 def _check_version(r, n):
@@ -75,9 +69,7 @@ def journal_records(path):
 def load_runs(path, doc):
     """Read RUNS.jsonl; every record must be an agvbench journal record of this version whose
     cell and planner are in the report `doc` (a journal of another sweep is refused)."""
-    cells = {c["cell"] if isinstance(c.get("cell"), str) else
-             f"{c['generator']}/{int(c['width'])}x{int(c['height'])}/{float(c['density']):g}"
-             for c in doc["cells"]}  # as plot_report.Report.cell_key
+    cells = {cell_key(c) for c in doc["cells"]}
     planners = {p["planner"] for c in doc["cells"] for p in c["planners"]}
     runs = Runs(path)
     try:

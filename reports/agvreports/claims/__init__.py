@@ -1,0 +1,1 @@
+"""The papers' claims (reports/claims.json) checked against sweep reports: reports/check_claims.py."""

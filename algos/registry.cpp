@@ -20,20 +20,6 @@
 
 namespace agv {
 
-const char* to_string(PlannerKind kind) {
-  switch (kind) {
-    case PlannerKind::grid_search:
-      return "grid_search";
-    case PlannerKind::sampling:
-      return "sampling";
-    case PlannerKind::swarm:
-      return "swarm";
-    case PlannerKind::local:
-      return "local";
-  }
-  return "?";
-}
-
 namespace {
 
 // The planners that stand on no other registered planner, in `list` order.
@@ -76,16 +62,23 @@ void follow_default_model(std::vector<PlannerInfo>& registry) {
     }
 }
 
+// A fusion planner's reference and global planners (algos/local/fusion.h PlannerLookup).
+std::unique_ptr<Planner> make_planner(const std::string& name, const nlohmann::json& params,
+                                      const std::string& where) {
+  return configure_planner(name, params, where).planner;
+}
+
 // The local planners, last: a fusion planner's `global_planner` chooses among the grid planners
 // registered before it (planner_registry() cannot be asked while it is being built).
 std::vector<PlannerInfo> build_registry() {
   std::vector<PlannerInfo> registry = standalone_planners();
   for (PlannerInfo& info : ompl_planners()) registry.push_back(std::move(info));
-  const std::vector<std::string> grid = planner_names(registry, PlannerKind::grid_search);
-  registry.push_back(dwa_planner());
-  registry.push_back(fusion_astar_dwa_planner(grid));
-  registry.push_back(fusion_alt_dwa_planner(grid));
-  registry.push_back(fusion_kin_dwa_planner(grid));
+  const FusionRegistry fusion{planner_names(registry, PlannerKind::grid_search),
+                              {&find_planner, &make_planner}};
+  registry.push_back(dwa_planner(fusion));
+  registry.push_back(fusion_astar_dwa_planner(fusion));
+  registry.push_back(fusion_alt_dwa_planner(fusion));
+  registry.push_back(fusion_kin_dwa_planner(fusion));
   follow_default_model(registry);
   return registry;
 }
@@ -95,13 +88,6 @@ std::vector<PlannerInfo> build_registry() {
 const std::vector<PlannerInfo>& planner_registry() {
   static const std::vector<PlannerInfo> registry = build_registry();
   return registry;
-}
-
-std::vector<std::string> planner_names(std::span<const PlannerInfo> planners, PlannerKind kind) {
-  std::vector<std::string> names;
-  for (const auto& info : planners)
-    if (info.kind == kind) names.push_back(info.name);
-  return names;
 }
 
 namespace {

@@ -1,6 +1,8 @@
 #pragma once
 // One explicit table of planners, one line per planner (docs/ARCHITECTURE.md "Style" item 6). A
 // config names a planner by its stable public name and sets any of its declared parameters.
+// What a planner declares about itself is algos/planner_info.h, which the planners include: the
+// registry includes them, never the other way round.
 
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -12,41 +14,13 @@
 #include <vector>
 
 #include "algos/planner.h"
+#include "algos/planner_info.h"
 #include "core/collision_model.h"
 #include "core/params.h"
 
 namespace agv {
 
-// The family a planner belongs to (its folder under algos/). Code that needs "the grid
-// planners" (a fusion planner's global planner, the family tests) asks the registry for a kind.
-enum class PlannerKind { grid_search, sampling, swarm, local };
-const char* to_string(PlannerKind kind);
-
-struct PlannerInfo {
-  std::string name;  // stable public name, e.g. "astar"
-  PlannerKind kind = PlannerKind::grid_search;
-  std::string summary;  // one line for `agvbench list`
-  std::string source;   // where it comes from, e.g. "paper 000 section 4.1"
-  // The work counters it reports (docs/METRICS.md "Work counters"), each with what it counts
-  // for this planner; collision_checks is every planner's.
-  std::vector<std::pair<std::string, std::string>> counters;
-  bool stochastic = false;  // draws from the run's RNG
-  // Whether the planner proves that there is no path: where the goal cannot be reached it
-  // answers no_path (and the engine checks every no_path claim: missed_path). A planner that
-  // searches within a budget of samples, iterations or simulated time cannot tell "none" from
-  // "not found yet", sets false and gives up with limit (the planner contract, checked by
-  // tests/algos/test_contract.cpp).
-  bool proves_no_path = true;
-  std::vector<ParamSpec> params;
-  // Builds a planner from a validated parameter set.
-  std::unique_ptr<Planner> (*make)(const Params& params) = nullptr;
-  // Empty for a built-in planner; else the name of the plugin it came from (algos/plugin.h).
-  std::string plugin;
-};
-
 const std::vector<PlannerInfo>& planner_registry();
-// The names of the planners of one kind, in the order of `planners`.
-std::vector<std::string> planner_names(std::span<const PlannerInfo> planners, PlannerKind kind);
 // For test binaries only, before any sweep starts: makes a planner findable by name without
 // putting it in the real registry (the isolation tests' deliberately faulty planners).
 void add_planner_for_testing(PlannerInfo info);

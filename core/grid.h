@@ -14,6 +14,11 @@
 
 namespace agv {
 
+// The one map size limit: the largest side of any map agvbench generates or reads (generated
+// maps, MovingAI files, occupancy images), and the cap of every shape parameter's range (a room
+// or block wider than any grid changes nothing). 8192^2 cells are 64 MiB of occupancy.
+inline constexpr int kMaxMapSide = 8192;
+
 struct Cell {
   int x = 0;
   int y = 0;

@@ -14,6 +14,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "engine/config_loader.h"
 #include "engine/map_task.h"
 
 extern char** environ;
@@ -292,7 +293,9 @@ int worker_main(std::int64_t memory_mb) {
     return 2;
   }
   std::cout << nlohmann::json{{"ready", true}}.dump() << "\n" << std::flush;
-  const MapTaskContext context(config);
+  const SweepPlan plan = plan_sweep(config);
+  const std::string hash = config_hash(config);
+  const MapTaskContext context(config, plan, hash);
   std::int64_t number = 0;
   while (std::getline(std::cin, line)) {
     ++number;

@@ -98,8 +98,8 @@ double number_or_nan(const json& v) {
 
 }  // namespace
 
-RecordRestorer::RecordRestorer(const std::string& config_hash, SweepResults& results)
-    : config_hash_(config_hash), results_(results) {
+RecordRestorer::RecordRestorer(SweepResults& results)
+    : config_hash_(results.config_hash), results_(results) {
   for (const auto& c : results.plan.cells) cell_index_[c.key] = c.index;
   for (std::size_t p = 0; p < results.labels.size(); ++p) planner_index_[results.labels[p]] = p;
 }
@@ -132,40 +132,46 @@ bool RecordRestorer::restore(const json& rec, const std::string& where) {
     if (!results_.scheduled(task, planner->second))
       throw InputError(where + ": planner \"" + planner->first +
                        "\" is not scheduled on this map (outside its \"only\" scope)");
-    RunSlot& slot = results_.run(task, planner->second);
-    if (slot.done) return false;
-    const auto outcome = outcome_from_string(rec.at("outcome").get<std::string>());
-    if (!outcome) throw InputError(where + ": unknown outcome");
-    slot.outcome = *outcome;
-    slot.metrics.fill(std::numeric_limits<double>::quiet_NaN());
-    slot.extra.clear();
-    for (const auto& [name, value] : rec.at("metrics").items()) {
-      bool known = false;
-      for (std::size_t i = 0; i < kRunMetricNames.size(); ++i) {
-        if (kRunMetricNames[i] == name) {
-          slot.metrics[i] = number_or_nan(value);
-          known = true;
-        }
-      }
-      if (!known) slot.extra.emplace_back(name, number_or_nan(value));
-    }
-    const json& timing = rec.at("timing");
-    slot.plan_time_ns = timing.at("plan_time_ns").get<std::int64_t>();
-    slot.phases.clear();
-    for (const auto& [name, ns] : timing.at("phases").items())
-      slot.phases.push_back({name, ns.get<std::int64_t>()});
-    slot.done = true;
-    MapSlot& ms = results_.maps[static_cast<std::size_t>(task)];
-    const json& map = rec.at("map");
-    if (map.contains("rejections")) {
-      ms.rejections = map.at("rejections").get<int>();
-      ms.obstacle_fraction = map.at("obstacle_fraction").get<double>();
-      ms.done = true;
-    }
+    if (results_.run(task, planner->second).done) return false;
+    results_.store(task, planner->second, slot_of_record(rec, where), map_slot_of_record(rec));
     return true;
   } catch (const json::exception& e) {
     throw InputError(where + ": malformed journal record (" + e.what() + ")");
   }
+}
+
+RunSlot RecordRestorer::slot_of_record(const json& rec, const std::string& where) {
+  RunSlot slot;
+  const auto outcome = outcome_from_string(rec.at("outcome").get<std::string>());
+  if (!outcome) throw InputError(where + ": unknown outcome");
+  slot.outcome = *outcome;
+  slot.metrics.fill(std::numeric_limits<double>::quiet_NaN());
+  for (const auto& [name, value] : rec.at("metrics").items()) {
+    bool known = false;
+    for (std::size_t i = 0; i < kRunMetricNames.size(); ++i) {
+      if (kRunMetricNames[i] == name) {
+        slot.metrics[i] = number_or_nan(value);
+        known = true;
+      }
+    }
+    if (!known) slot.extra.emplace_back(name, number_or_nan(value));
+  }
+  const json& timing = rec.at("timing");
+  slot.plan_time_ns = timing.at("plan_time_ns").get<std::int64_t>();
+  for (const auto& [name, ns] : timing.at("phases").items())
+    slot.phases.push_back({name, ns.get<std::int64_t>()});
+  return slot;
+}
+
+MapSlot RecordRestorer::map_slot_of_record(const json& rec) {
+  MapSlot ms;
+  const json& map = rec.at("map");
+  if (map.contains("rejections")) {
+    ms.rejections = map.at("rejections").get<int>();
+    ms.obstacle_fraction = map.at("obstacle_fraction").get<double>();
+    ms.done = true;
+  }
+  return ms;
 }
 
 void RecordRestorer::refuse_changed_map_file(const json& rec, const std::string& where) const {
@@ -181,12 +187,12 @@ void RecordRestorer::refuse_changed_map_file(const json& rec, const std::string&
                      " now): a changed map file is another sweep; start a new journal");
 }
 
-JournalStats restore_journal(const std::string& path, const std::string& config_hash,
-                             SweepResults& results) {
+JournalStats restore_journal(const std::string& path, SweepResults& results) {
+  const std::string& config_hash = results.config_hash;
   require_regular_file(path, "journal");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("journal \"" + path + "\": " + std::strerror(errno));
-  RecordRestorer restorer(config_hash, results);
+  RecordRestorer restorer(results);
   JournalStats stats;
   std::string line;
   std::int64_t line_no = 0;

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/sweep_runner.h"
+#include "engine/sweep_results.h"
 
 namespace agv {
 
@@ -73,7 +73,8 @@ struct JournalStats {
 // Restores records into a sweep's slots (shared by resume, merge and the isolated runner).
 class RecordRestorer {
  public:
-  RecordRestorer(const std::string& config_hash, SweepResults& results);
+  // Records of the results' config (its config_hash).
+  explicit RecordRestorer(SweepResults& results);
   // Returns false when the run was already restored (a duplicate). Throws InputError naming
   // `where` for a record of another config or of a cell, map or planner this sweep lacks.
   bool restore(const nlohmann::json& record, const std::string& where);
@@ -82,17 +83,20 @@ class RecordRestorer {
   void refuse_changed_map_file(const nlohmann::json& record, const std::string& where) const;
 
  private:
+  // A record's run and map as their slots (the map's is not done when the record has none).
+  static RunSlot slot_of_record(const nlohmann::json& rec, const std::string& where);
+  static MapSlot map_slot_of_record(const nlohmann::json& rec);
+
   std::string config_hash_;
   SweepResults& results_;
   std::map<std::string, int> cell_index_;
   std::map<std::string, std::size_t> planner_index_;
 };
 
-// Reads every record of `path` into `results` (whose plan and labels must be set). Throws
+// Reads every record of `path` into `results` (empty_results of the config). Throws
 // InputError for an unreadable file, a malformed line other than a torn last one, a record
 // without this tool's name and journal version (engine/run_record.h), a record of another
 // config (hash mismatch) or one naming a cell, map or planner this sweep lacks.
-JournalStats restore_journal(const std::string& path, const std::string& config_hash,
-                             SweepResults& results);
+JournalStats restore_journal(const std::string& path, SweepResults& results);
 
 }  // namespace agv

@@ -2,12 +2,15 @@
 
 #include <limits>
 
+#include "engine/single_map.h"
+
 namespace agv {
 
-MapTaskContext::MapTaskContext(const SweepConfig& sweep_config)
+MapTaskContext::MapTaskContext(const SweepConfig& sweep_config, const SweepPlan& sweep_plan,
+                               const std::string& hash)
     : config(sweep_config),
-      plan(plan_sweep(sweep_config)),
-      config_hash(agv::config_hash(sweep_config)),
+      plan(sweep_plan),
+      config_hash(hash),
       budget(std::chrono::duration_cast<std::chrono::nanoseconds>(
           std::chrono::duration<double>(sweep_config.time_limit_s))) {}
 
@@ -46,9 +49,9 @@ struct TaskMap {
 TaskMap make_task_map(const MapTaskContext& context, std::int64_t task) {
   const SweepCell& cell = context.plan.cell_of(task);
   const int map_index = context.plan.map_index_of(task);
-  Rng rng = map_rng(context.config.seed, cell, map_index);
   TaskMap out;
   if (cell.file != nullptr) {
+    Rng rng = map_rng(context.config.seed, cell, map_index);
     const FileQuery q = file_query(*cell.file, cell.queries, map_index, cell.spec, rng);
     out.grid = &cell.file->grid;
     out.start = q.start;
@@ -59,7 +62,7 @@ TaskMap make_task_map(const MapTaskContext& context, std::int64_t task) {
     out.slot.done = true;
     return out;
   }
-  out.generated = make_map(cell.spec, rng);
+  out.generated = make_cell_map(cell.spec, cell.key, context.config.seed, map_index);
   out.grid = &out.generated.grid;
   out.start = out.generated.start;
   out.goal = out.generated.goal;
@@ -104,10 +107,9 @@ MapSlot run_map_task(const MapTaskContext& context, std::int64_t task,
   if (!context.config.any_angle_reference) ref.skip_any_angle();
   for (const std::size_t p : planners) {
     const PlannerEntry& entry = context.config.planners.at(p);
-    Rng rng = run_rng(context.config.seed, cell, map_index, entry.label);
-    const RunOutput out =
-        execute_run(*workspace.planners.at(p).planner, ref, rng, workspace.scratch,
-                    Deadline::after(context.budget), context.config.motion);
+    const RunOutput out = run_on_map(*workspace.planners.at(p).planner, ref, context.config.seed,
+                                     cell.key, map_index, entry.label, workspace.scratch,
+                                     Deadline::after(context.budget), context.config.motion);
     on_run(MapTaskRun{context, task, p, slot, out});
   }
   return slot;

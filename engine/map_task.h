@@ -16,16 +16,18 @@
 
 #include "engine/run_record.h"
 #include "engine/sweep_plan.h"
+#include "engine/sweep_results.h"
 
 namespace agv {
 
-// What every map task of one sweep shares: the config, its plan and hash, the run budget.
+// What every map task of one sweep shares: the config, its plan and hash (made once, by the
+// sweep's results or the worker process), the run budget.
 struct MapTaskContext {
-  explicit MapTaskContext(const SweepConfig& config);
+  MapTaskContext(const SweepConfig& config, const SweepPlan& plan, const std::string& config_hash);
 
   const SweepConfig& config;
-  SweepPlan plan;
-  std::string config_hash;
+  const SweepPlan& plan;
+  const std::string& config_hash;
   std::chrono::nanoseconds budget;  // per run: the config's time_limit_s
 };
 

@@ -218,7 +218,8 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
     std::vector<double> fractions;
     std::int64_t rejections = 0, maps = 0;
     for (int m = 0; m < cell.maps; ++m) {
-      const MapSlot& ms = r.maps[static_cast<std::size_t>(cell.first_task + m)];
+      const MapSlot& ms =
+          r.cells[static_cast<std::size_t>(cell.index)].maps[static_cast<std::size_t>(m)];
       if (!ms.done) continue;
       ++maps;
       rejections += ms.rejections;

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "engine/sweep_runner.h"
+#include "engine/sweep_results.h"
 
 namespace agv {
 

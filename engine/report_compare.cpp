@@ -413,13 +413,10 @@ ReportComparison compare_reports(const json& before, const json& after, const Ru
   return c;
 }
 
-std::string comparison_text(const ReportComparison& c) {
-  std::ostringstream out;
-  if (!c.parameter_changes.empty()) {
-    out << "planner parameters changed:\n";
-    for (const auto& line : c.parameter_changes) out << "  " << line << "\n";
-  }
-  // One line per (planner, cell, metric), its fields together.
+namespace {
+
+// The non-timing differences, one line per (planner, cell, metric) with its fields together.
+void differences_text(const ReportComparison& c, std::ostringstream& out) {
   std::size_t groups = 0;
   std::ostringstream list;
   std::string planner;
@@ -449,6 +446,17 @@ std::string comparison_text(const ReportComparison& c) {
         << " planner/cell/metric groups\n"
         << list.str();
   }
+}
+
+}  // namespace
+
+std::string comparison_text(const ReportComparison& c) {
+  std::ostringstream out;
+  if (!c.parameter_changes.empty()) {
+    out << "planner parameters changed:\n";
+    for (const auto& line : c.parameter_changes) out << "  " << line << "\n";
+  }
+  differences_text(c, out);
 
   out << "\nplanning time, after / before (per planner and cell; wilcoxon: signed-rank test over "
          "the maps, paired by task; mann_whitney: U test; none: ratio of the reports' medians)\n";

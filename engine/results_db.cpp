@@ -382,7 +382,7 @@ void insert_runs(Database& db, std::int64_t id, const ExperimentRecord& e,
   for (std::int64_t task = 0; task < r.plan.map_tasks(); ++task) {
     const SweepCell& cell = r.plan.cell_of(task);
     const int map_index = r.plan.map_index_of(task);
-    const MapSlot& map = r.maps[static_cast<std::size_t>(task)];
+    const MapSlot& map = r.map(task);
     for (std::size_t p = 0; p < r.labels.size(); ++p) {
       const RunSlot& s = r.run(task, p);
       if (!s.done) continue;
@@ -472,7 +472,7 @@ void insert_paired(Database& db, std::int64_t id, const ExperimentRecord& e) {
 std::int64_t append_experiment(const std::string& db_path, const ExperimentRecord& e) {
   Database db(db_path, e.option);
   check_or_create_layout(db);
-  const std::string hash = config_hash(*e.config);
+  const std::string& hash = e.results->config_hash;
   const std::string digest = runs_digest(*e.results);
   db.exec("PRAGMA foreign_keys = ON", "cannot enable foreign keys");
   // One transaction: a failure (full disk, a kill) leaves the database as it was.

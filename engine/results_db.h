@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-#include "engine/sweep_runner.h"
+#include "engine/sweep_results.h"
 
 namespace agv {
 

@@ -14,31 +14,6 @@
 
 namespace agv {
 
-namespace {
-constexpr std::array<std::string_view, kOutcomeCount> kOutcomeNames = {"success",
-                                                                       "no_path",
-                                                                       "missed_path",
-                                                                       "limit",
-                                                                       "invalid_path",
-                                                                       "invalid_input",
-                                                                       "crash",
-                                                                       "timeout",
-                                                                       "oom",
-                                                                       "collision_static",
-                                                                       "collision_unknown",
-                                                                       "collision_dynamic",
-                                                                       "sim_timeout",
-                                                                       "stuck"};
-}
-
-std::string_view to_string(Outcome outcome) { return kOutcomeNames[static_cast<int>(outcome)]; }
-
-std::optional<Outcome> outcome_from_string(std::string_view name) {
-  for (int i = 0; i < kOutcomeCount; ++i)
-    if (kOutcomeNames[i] == name) return static_cast<Outcome>(i);
-  return std::nullopt;
-}
-
 std::optional<double> MapReference::optimal_length(CornerRule rule, Scratch& scratch) {
   const auto r = static_cast<std::size_t>(rule);
   if (!known_[r]) {
@@ -57,31 +32,86 @@ std::optional<double> MapReference::any_angle_length(Scratch& scratch) {
   return any_angle_;
 }
 
+namespace {
+
+// The planner's call, timed on this thread's CPU clock; false when it threw (the outcome set).
+bool call_planner(const Planner& planner, const PlanRequest& request, RunOutput& out) {
+  const std::int64_t t0 = thread_cpu_ns();
+  try {
+    out.result = plan_checked(planner, request);
+    out.plan_time_ns = thread_cpu_ns() - t0;
+    return true;
+  } catch (const std::bad_alloc&) {
+    out.outcome = Outcome::oom;
+    out.message = "planner ran out of memory";
+  } catch (const std::exception& e) {
+    out.outcome = Outcome::crash;
+    out.message = std::string("planner threw: ") + e.what();
+  } catch (...) {
+    out.outcome = Outcome::crash;
+    out.message = "planner threw a non-standard exception";
+  }
+  out.plan_time_ns = thread_cpu_ns() - t0;
+  return false;
+}
+
+// The outcome of a run the planner gave up on; a claimed "no path" counts as such only when the
+// map truly has none.
+Outcome failure_outcome(const PlanResult& r, MapReference& map, Scratch& scratch) {
+  switch (r.failure) {
+    case Failure::limit:
+      return Outcome::limit;
+    case Failure::invalid_input:
+      return Outcome::invalid_input;
+    case Failure::invalid_path:
+      return Outcome::invalid_path;
+    case Failure::no_path:
+    case Failure::none:
+      break;
+  }
+  return map.optimal_length(r.rule, scratch) ? Outcome::missed_path : Outcome::no_path;
+}
+
+// length / reference, 1 for a zero reference, NaN (left) without one.
+void set_ratio(double& metric, double length, std::optional<double> reference) {
+  if (reference && *reference > 0.0) {
+    metric = length / *reference;
+  } else if (reference && *reference == 0.0) {
+    metric = 1.0;
+  }
+}
+
+// A successful run's metrics, every one computed here from the path (docs/METRICS.md).
+void measure(const PlanResult& r, MapReference& map, Scratch& scratch,
+             const MotionTimeParams& motion, const std::optional<TrajectoryVerdict>& verdict,
+             RunOutput& out) {
+  PathMetrics m = compute_path_metrics(map.grid(), r.path, motion, 0, r.waypoints_before_sampling);
+  if (verdict) apply_trajectory_verdict(*verdict, map.grid().cell_edge(), m);
+  const auto values = metric_values(m);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    // The names are one list; a mismatch is a bug caught here, not a mislabelled report.
+    if (values[i].first != kRunMetricNames[i]) throw std::logic_error("metric order mismatch");
+    out.metrics[i] = values[i].second;
+  }
+  // The reference is the 8-connected optimum under the model's rule, which also keeps the model's
+  // clearance (core/collision_model.h): exactly 1 for an optimal grid search under the model.
+  set_ratio(out.metrics[kOptimalityMetric], m.path_length,
+            map.optimal_length(map.model().corner_rule, scratch));
+  // The lower bound no valid path beats (docs/METRICS.md "Any-angle reference"): >= 1 for every
+  // planner, the distance to the best any robot on this grid could do.
+  set_ratio(out.metrics[kAnyAngleMetric], m.path_length, map.any_angle_length(scratch));
+  // A MovingAI scenario's optimum (docs/METRICS.md "scen_ratio"): 1 for an optimal grid search.
+  set_ratio(out.metrics[kScenMetric], m.path_length, map.scenario_optimum());
+}
+
+}  // namespace
+
 RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scratch& scratch,
                       Deadline deadline, const MotionTimeParams& motion) {
   RunOutput out;
   out.metrics.fill(std::numeric_limits<double>::quiet_NaN());
   const PlanRequest request{map.grid(), map.start(), map.goal(), rng, scratch, deadline};
-  const std::int64_t t0 = thread_cpu_ns();
-  try {
-    out.result = plan_checked(planner, request);
-  } catch (const std::bad_alloc&) {
-    out.plan_time_ns = thread_cpu_ns() - t0;
-    out.outcome = Outcome::oom;
-    out.message = "planner ran out of memory";
-    return out;
-  } catch (const std::exception& e) {
-    out.plan_time_ns = thread_cpu_ns() - t0;
-    out.outcome = Outcome::crash;
-    out.message = std::string("planner threw: ") + e.what();
-    return out;
-  } catch (...) {
-    out.plan_time_ns = thread_cpu_ns() - t0;
-    out.outcome = Outcome::crash;
-    out.message = "planner threw a non-standard exception";
-    return out;
-  }
-  out.plan_time_ns = thread_cpu_ns() - t0;
+  if (!call_planner(planner, request, out)) return out;
   const PlanResult& r = out.result;
   // Before the planner's own extras, for every outcome the planner returned from: the work was
   // done whether or not the path is good.
@@ -102,28 +132,11 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
       return out;
     }
   }
-
   if (!r.ok()) {
     out.message = r.message;
-    switch (r.failure) {
-      case Failure::limit:
-        out.outcome = Outcome::limit;
-        break;
-      case Failure::invalid_input:
-        out.outcome = Outcome::invalid_input;
-        break;
-      case Failure::invalid_path:
-        out.outcome = Outcome::invalid_path;
-        break;
-      case Failure::no_path:
-      case Failure::none:
-        // A claimed "no path" counts as such only when the map truly has none.
-        out.outcome = map.optimal_length(r.rule, scratch) ? Outcome::missed_path : Outcome::no_path;
-        break;
-    }
+    out.outcome = failure_outcome(r, map, scratch);
     return out;
   }
-
   if (!verdict) {
     // Under the sweep's model, whatever rule the planner searched with (docs/METRICS.md
     // "Collision model"): a looser variant's path that breaks it is invalid, never scored.
@@ -136,34 +149,7 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
     }
   }
   out.outcome = Outcome::success;
-  PathMetrics m = compute_path_metrics(map.grid(), r.path, motion, 0, r.waypoints_before_sampling);
-  if (verdict) apply_trajectory_verdict(*verdict, map.grid().cell_edge(), m);
-  const auto values = metric_values(m);
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    // The names are one list; a mismatch is a bug caught here, not a mislabelled report.
-    if (values[i].first != kRunMetricNames[i]) throw std::logic_error("metric order mismatch");
-    out.metrics[i] = values[i].second;
-  }
-  // The reference is the 8-connected optimum under the model's rule, which also keeps the model's
-  // clearance (core/collision_model.h): exactly 1 for an optimal grid search under the model.
-  if (auto opt = map.optimal_length(map.model().corner_rule, scratch); opt && *opt > 0.0) {
-    out.metrics[kOptimalityMetric] = m.path_length / *opt;
-  } else if (opt && *opt == 0.0) {
-    out.metrics[kOptimalityMetric] = 1.0;
-  }
-  // The lower bound no valid path beats (docs/METRICS.md "Any-angle reference"): >= 1 for every
-  // planner, the distance to the best any robot on this grid could do.
-  if (auto bound = map.any_angle_length(scratch); bound && *bound > 0.0) {
-    out.metrics[kAnyAngleMetric] = m.path_length / *bound;
-  } else if (bound && *bound == 0.0) {
-    out.metrics[kAnyAngleMetric] = 1.0;
-  }
-  // A MovingAI scenario's optimum (docs/METRICS.md "scen_ratio"): 1 for an optimal grid search.
-  if (auto scen = map.scenario_optimum(); scen && *scen > 0.0) {
-    out.metrics[kScenMetric] = m.path_length / *scen;
-  } else if (scen && *scen == 0.0) {
-    out.metrics[kScenMetric] = 1.0;
-  }
+  measure(r, map, scratch, motion, verdict, out);
   return out;
 }
 

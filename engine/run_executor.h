@@ -7,50 +7,15 @@
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "algos/planner.h"
 #include "core/collision_model.h"
 #include "engine/metrics.h"
+#include "engine/outcome.h"
+#include "engine/run_metrics.h"
 
 namespace agv {
-
-enum class Outcome {
-  success,
-  no_path,        // planner found none and none exists under its corner rule (checked)
-  missed_path,    // planner reported no path, but one exists under its corner rule
-  limit,          // time or iteration cap
-  invalid_path,   // returned path failed validation
-  invalid_input,  // planner refused the query
-  crash,          // planner threw, or (isolated) its process died of a signal
-  timeout,        // isolated: killed at the hard wall-clock limit
-  oom,            // isolated: ran out of its address-space cap
-  // Simulated robot runs (fusion planners), judged from the executed trajectory by
-  // engine/trajectory_judge.h; reaching the goal is `success`.
-  collision_static,   // the robot disc hit a grid obstacle
-  collision_unknown,  // ... an unknown static cell (one the global planner did not see)
-  collision_dynamic,  // ... a moving obstacle
-  sim_timeout,        // simulated time limit reached before the goal
-  stuck,              // no admissible moving velocity for the planner's stuck_steps
-};
-inline constexpr int kOutcomeCount = 14;
-std::string_view to_string(Outcome outcome);
-std::optional<Outcome> outcome_from_string(std::string_view name);
-
-// The per-run scalar metrics, in report order; NaN where a metric does not apply.
-// The path metrics of engine/metrics.h first (metric_values order), then the engine's own.
-// The work counters a planner defines (algos/planner.h WorkCounters) are not among them: they
-// travel under their own names with the planner's extra metrics (RunOutput::result.extra), so
-// only planners that define one report it (docs/METRICS.md "Work counters").
-inline constexpr std::array<std::string_view, kPathMetricCount + 3> kRunMetricNames = {
-    "path_length",   "path_length_m",    "waypoints",       "turns",         "turn_angle_rad",
-    "max_turn_rad",  "smoothness_mean",  "smoothness_max",  "min_clearance", "min_clearance_m",
-    "motion_time_s", "optimality_ratio", "any_angle_ratio", "scen_ratio"};
-inline constexpr std::size_t kOptimalityMetric = kPathMetricCount;
-inline constexpr std::size_t kAnyAngleMetric = kPathMetricCount + 1;
-inline constexpr std::size_t kScenMetric = kPathMetricCount + 2;
-using RunMetrics = std::array<double, kRunMetricNames.size()>;
 
 // What the engine knows about a map, shared by every planner run on it.
 class MapReference {

@@ -6,6 +6,16 @@ namespace agv {
 
 using nlohmann::json;
 
+RunSlot run_slot_of(const RunOutput& run) {
+  RunSlot slot;
+  slot.outcome = run.outcome;
+  slot.metrics = run.metrics;
+  slot.plan_time_ns = run.plan_time_ns;
+  slot.phases = run.result.phases;
+  slot.extra = run.result.extra;
+  return slot;
+}
+
 json run_record(const std::string& config_hash, std::uint64_t seed, const SweepCell& cell,
                 int map_index, const PlannerEntry& planner, const MapSlot& map,
                 const RunOutput& run) {

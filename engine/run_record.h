@@ -5,7 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "engine/sweep_runner.h"
+#include "engine/run_executor.h"
+#include "engine/sweep_results.h"
 
 namespace agv {
 
@@ -14,6 +15,10 @@ namespace agv {
 // record's keys or of their meaning.
 inline constexpr const char* kJournalTool = "agvbench";
 inline constexpr int kJournalVersion = 1;
+
+// What the sweep keeps of a run executed in process (an isolated worker's run is kept as its
+// record decoded: engine/journal.h).
+RunSlot run_slot_of(const RunOutput& run);
 
 nlohmann::json run_record(const std::string& config_hash, std::uint64_t seed, const SweepCell& cell,
                           int map_index, const PlannerEntry& planner, const MapSlot& map,

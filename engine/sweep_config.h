@@ -1,7 +1,6 @@
 #pragma once
-// A sweep's configuration: what maps, which planners, how many of each. Loaded from JSON with
-// every field checked at the boundary: an unknown key, a wrong type or an out-of-range value is
-// an InputError naming the field (exit code 2), never a silently ignored setting.
+// A sweep's configuration: what maps, which planners, how many of each; its canonical form (the
+// config as run) and hash. Read from JSON by engine/config_loader.h.
 
 #include <cstdint>
 #include <memory>
@@ -11,6 +10,7 @@
 
 #include "algos/registry.h"
 #include "core/collision_model.h"
+#include "core/json_reader.h"
 #include "engine/metrics.h"
 #include "engine/plugins.h"
 #include "generators/map_files.h"
@@ -21,15 +21,7 @@ namespace agv {
 
 // The ranges of the config's numbers that the command line shares: `plan --seed`, `--size`,
 // `--density`, `--map-index` and `run --threads` are checked against these very values
-// (engine/cli_numbers.h), so a number the config refuses the command line refuses too.
-struct IntRange {
-  long long lo = 0;
-  long long hi = 0;
-};
-struct NumberRange {
-  double lo = 0.0;
-  double hi = 0.0;
-};
+// (cli/cli_numbers.h), so a number the config refuses the command line refuses too.
 inline constexpr IntRange kSeedRange{0, 1LL << 53};
 inline constexpr IntRange kMapSideRange{2, kMaxMapSide};
 inline constexpr NumberRange kDensityRange{0.0, 0.95};
@@ -112,18 +104,17 @@ struct SweepConfig {
   std::string base_dir = ".";  // the config file's folder: map sources' files are relative to it
 };
 
-// Throws InputError naming the field. Loads the config's "plugins" first (engine/plugins.h); a
-// plugin's path and a map source's file patterns are relative to `base_dir` (load_config: the
-// config file's folder).
-SweepConfig parse_config(const nlohmann::json& j, const std::string& base_dir = ".");
-// Reads and parses; malformed JSON -> InputError with the file, line and column.
-SweepConfig load_config(const std::string& path);
-
 // The config as run, every default filled in, execution settings left out: the part of a
 // report that the determinism guarantee covers.
 // A map source's entry lists its files with their content hashes ("map_files"), so a changed
 // map file is another config.
 nlohmann::json config_as_run(const SweepConfig& config);
+
+// Two parts of config_as_run, which the loader also checks a stated config as run against (an
+// isolation worker's, a report's): a map source's files with their content hashes, and the
+// parameters a planner entry sets looser than the collision model.
+nlohmann::json map_files_json(const MapFileSet& set);
+nlohmann::json looser_json(const std::vector<ModelDeviation>& deviations);
 
 // Stable hash of config_as_run (journal compatibility, task ids), "sources" left out (it is
 // commentary). Only the generators the sweep uses enter it, so a generator or parameter added to

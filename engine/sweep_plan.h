@@ -56,35 +56,24 @@ int scoped_maps(const PlannerEntry& planner, const SweepCell& cell);
 // The runs a sweep schedules: over planners and cells, their scoped map counts.
 std::int64_t scheduled_runs(const SweepConfig& config, const SweepPlan& plan);
 
-// What a sweep holds in memory while it runs (engine/sweep_runner.h SweepResults): its cells, a
-// map slot and a to-do entry per map task, a run slot per map task and planner (scheduled or
-// not), and the phase times and extra metrics each run leaves in its slot. Counted from the
-// config alone, without expanding the plan, so a config too large to plan is refused as well.
-struct SweepSize {
-  double cells = 0;  // doubles: a hostile config's products must not overflow
-  double map_tasks = 0;
-  double run_slots = 0;
-  double scheduled_runs = 0;
-  double bytes = 0;  // estimate
-};
-SweepSize sweep_size(const SweepConfig& config);
-// Physical memory, or the cgroup's memory.max when that is lower; 0 when neither is known.
-double usable_memory_bytes();
-// InputError naming maps_per_cell when the estimate exceeds half of usable_memory_bytes() (the
-// rest is headroom: the maps, planner scratch and the report being built).
-void check_sweep_size(const SweepConfig& config);
-// "1.5 GiB"
-std::string bytes_text(double bytes);
-
 // Short text of a density ("0.2", "0.35"): ten significant digits, so two densities closer
 // than that share one text, and the config refuses them (they would share one cell key).
 std::string density_text(double density);
 // "uniform/64x64/0.2": names a cell in records and seeds its maps.
 std::string cell_key(const std::string& generator, GridSize size, double density);
 
-// The random stream of a cell's map `map_index` and of one planner's run on it.
-Rng map_rng(std::uint64_t seed, const SweepCell& cell, int map_index);
-Rng run_rng(std::uint64_t seed, const SweepCell& cell, int map_index, const std::string& label);
+// The random stream of a cell's map `map_index` and of one planner's run on it, by the cell or
+// its key.
+Rng map_rng(std::uint64_t seed, const std::string& cell_key, int map_index);
+Rng run_rng(std::uint64_t seed, const std::string& cell_key, int map_index,
+            const std::string& label);
+inline Rng map_rng(std::uint64_t seed, const SweepCell& cell, int map_index) {
+  return map_rng(seed, cell.key, map_index);
+}
+inline Rng run_rng(std::uint64_t seed, const SweepCell& cell, int map_index,
+                   const std::string& label) {
+  return run_rng(seed, cell.key, map_index, label);
+}
 
 // Deterministic id of one run: config hash, cell, map index, planner label.
 std::string task_id(const std::string& config_hash, const SweepCell& cell, int map_index,

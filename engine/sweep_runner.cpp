@@ -16,53 +16,8 @@
 #include "engine/journal.h"
 #include "engine/json_text.h"
 #include "engine/map_task.h"
-#include "engine/progress.h"
 
 namespace agv {
-
-namespace {
-
-void fill_run_slot(RunSlot& slot, const RunOutput& out) {
-  slot.outcome = out.outcome;
-  slot.metrics = out.metrics;
-  slot.plan_time_ns = out.plan_time_ns;
-  slot.phases = out.result.phases;
-  slot.extra = out.result.extra;
-  slot.done = true;
-}
-
-}  // namespace
-
-SweepResults empty_results(const SweepConfig& config) {
-  SweepResults res;
-  res.plan = plan_sweep(config);
-  for (const auto& p : config.planners) res.labels.push_back(p.label);
-  const std::int64_t tasks = res.plan.map_tasks();
-  res.maps.resize(static_cast<std::size_t>(tasks));
-  res.runs.resize(static_cast<std::size_t>(tasks) * res.labels.size());
-  for (auto& r : res.runs) r.metrics.fill(std::numeric_limits<double>::quiet_NaN());
-  for (const auto& cell : res.plan.cells)
-    for (const auto& p : config.planners) res.scoped_maps.push_back(scoped_maps(p, cell));
-  return res;
-}
-
-Coverage coverage_of(const SweepResults& r) {
-  Coverage c;
-  for (const int maps : r.scoped_maps) c.runs_expected += maps;
-  for (std::int64_t t = 0; t < r.plan.map_tasks(); ++t) {
-    bool any = false;
-    for (std::size_t p = 0; p < r.labels.size(); ++p) any = any || r.run(t, p).done;
-    c.maps_missing += any ? 0 : 1;
-  }
-  for (const auto& s : r.runs) c.runs_present += s.done ? 1 : 0;
-  return c;
-}
-
-void update_completeness(SweepResults& results) {
-  // Only scheduled runs can be done: the runner skips the others and the journal refuses them.
-  const Coverage c = coverage_of(results);
-  results.complete = c.runs_present == c.runs_expected;
-}
 
 namespace {
 
@@ -81,20 +36,22 @@ std::string journal_path_of(const SweepOptions& options) {
   return options.resume_path;
 }
 
-// The planners of `task` still to run: scheduled there and not restored, in config order.
-std::vector<std::size_t> pending_planners(const SweepResults& res, std::int64_t task) {
-  std::vector<std::size_t> pending;
-  for (std::size_t p = 0; p < res.labels.size(); ++p)
-    if (res.scheduled(task, p) && !res.run(task, p).done) pending.push_back(p);
-  return pending;
-}
-
 // The map tasks of this call's shard with a planner still to run.
-std::vector<std::int64_t> pending_tasks(const SweepResults& res, const SweepOptions& options) {
-  std::vector<std::int64_t> todo;
+// The map tasks of this call's shard with a planner still to run, and how many runs they hold
+// (progress counts runs: map tasks differ in planners, by scopes and resumes).
+struct Todo {
+  std::vector<std::int64_t> tasks;
+  std::int64_t runs = 0;
+};
+
+Todo pending_tasks(const SweepResults& res, const SweepOptions& options) {
+  Todo todo;
   for (std::int64_t t = 0; t < res.plan.map_tasks(); ++t) {
     if (t % options.shard_count != options.shard_index) continue;
-    if (!pending_planners(res, t).empty()) todo.push_back(t);
+    const std::size_t pending = res.pending_planners(t).size();
+    if (pending == 0) continue;
+    todo.tasks.push_back(t);
+    todo.runs += static_cast<std::int64_t>(pending);
   }
   return todo;
 }
@@ -128,7 +85,7 @@ struct SweepState {
   SweepState(const MapTaskContext& task_context, SweepResults& sweep_results, bool journaled)
       : context(task_context),
         results(sweep_results),
-        restorer(task_context.config_hash, sweep_results),
+        restorer(sweep_results),
         keep_lines(journaled) {}
 
   const MapTaskContext& context;
@@ -139,16 +96,15 @@ struct SweepState {
   std::atomic<bool> cut{false};  // an interruption cut runs short: they are not recorded
 };
 
-// Runs the task's pending planners in this thread; returns their journal lines.
-std::string run_task_in_process(SweepState& s, MapTaskWorkspace& workspace, std::int64_t task) {
+// Runs the task's pending `planners` in this thread; returns their journal lines.
+std::string run_task_in_process(SweepState& s, MapTaskWorkspace& workspace, std::int64_t task,
+                                const std::vector<std::size_t>& planners) {
   std::string lines;
-  const std::vector<std::size_t> planners = pending_planners(s.results, task);
-  s.results.maps[static_cast<std::size_t>(task)] =
-      run_map_task(s.context, task, planners, workspace, [&](const MapTaskRun& run) {
-        fill_run_slot(s.results.run(task, run.planner), run.output);
-        ++s.executed;
-        if (s.keep_lines) lines += json_text(run.record()) + '\n';
-      });
+  run_map_task(s.context, task, planners, workspace, [&](const MapTaskRun& run) {
+    s.results.store(task, run.planner, run_slot_of(run.output), run.map);
+    ++s.executed;
+    if (s.keep_lines) lines += json_text(run.record()) + '\n';
+  });
   return lines;
 }
 
@@ -157,9 +113,8 @@ std::string run_task_in_process(SweepState& s, MapTaskWorkspace& workspace, std:
 // its outcome, and a fresh worker takes the task's remaining planners. A run an interruption cut
 // short is not recorded: the task's remaining planners stay pending for a resume.
 std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard_limit_s,
-                              std::int64_t task) {
+                              std::int64_t task, const std::vector<std::size_t>& planners) {
   std::string lines;
-  const std::vector<std::size_t> planners = pending_planners(s.results, task);
   std::size_t next = 0;
   while (next < planners.size()) {
     process.start_task(task, std::span(planners).subspan(next));
@@ -176,7 +131,7 @@ std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard
       if (reply.ok) {
         record = std::move(reply.record);
       } else {
-        MapSlot& ms = s.results.maps[static_cast<std::size_t>(task)];
+        MapSlot& ms = s.results.map(task);
         if (!ms.done) ms = regenerate_map_slot(s.context, task);
         record =
             lost_run_record(s.context, task, p, ms, reply.outcome, reply.message, reply.wall_ns);
@@ -229,16 +184,34 @@ class FirstFailure {
   std::atomic<bool> failed_{false};
 };
 
+// Hands the runs done to the caller's progress callback, one call at a time and in order.
+class ProgressReporter {
+ public:
+  ProgressReporter(const SweepProgress& callback, std::int64_t total)
+      : callback_(callback), total_(total) {
+    if (callback_) callback_(0, total_);
+  }
+  void advance(std::int64_t runs) {
+    if (!callback_) return;
+    std::lock_guard lock(mutex_);
+    done_ += runs;
+    callback_(done_, total_);
+  }
+
+ private:
+  const SweepProgress& callback_;
+  std::int64_t total_;
+  std::int64_t done_ = 0;
+  std::mutex mutex_;
+};
+
 // Runs `todo` over oneTBB until every task is done, a task fails or a stop is requested (runs
 // in flight finish unless cut short). Returns whether an interruption left runs undone.
-bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
-               const SweepOptions& options, JournalWriter& journal, FirstFailure& failure) {
+bool run_tasks(SweepState& state, const Todo& todo, const SweepOptions& options,
+               JournalWriter& journal, FirstFailure& failure) {
   const bool isolated = options.isolation.enabled;
   const WorkerLaunch launch = worker_launch(state.context.config, options.isolation);
-  std::int64_t runs_to_do = 0;  // the meter counts runs: map tasks differ in planners (scopes)
-  for (const std::int64_t task : todo)
-    runs_to_do += static_cast<std::int64_t>(pending_planners(state.results, task).size());
-  ProgressMeter progress(runs_to_do, options.progress);
+  ProgressReporter progress(options.progress, todo.runs);
   tbb::enumerable_thread_specific<Worker> workers([&] {
     Worker w;
     if (isolated) {
@@ -250,20 +223,20 @@ bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
     return w;
   });
   std::atomic<bool> stopped{false};
-  tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t i) {
+  tbb::parallel_for(std::size_t{0}, todo.tasks.size(), [&](std::size_t i) {
     if (failure.failed()) return;
     if ((options.stop != nullptr && options.stop->load()) || state.cut.load()) {
       stopped = true;
       return;
     }
-    const std::int64_t task = todo[i];
-    const std::size_t planners_of_task = pending_planners(state.results, task).size();
+    const std::int64_t task = todo.tasks[i];
+    // Worked out once here (no other thread writes this task's slots) and handed on.
+    const std::vector<std::size_t> planners = state.results.pending_planners(task);
     try {
       Worker& w = workers.local();  // may start an isolation worker, which may fail
-      const std::vector<std::size_t> planners = pending_planners(state.results, task);
       const std::string lines =
-          isolated ? run_task_isolated(state, *w.process, launch.hard_limit_s, task)
-                   : run_task_in_process(state, w.workspace, task);
+          isolated ? run_task_isolated(state, *w.process, launch.hard_limit_s, task, planners)
+                   : run_task_in_process(state, w.workspace, task, planners);
       if (journal.enabled() && !lines.empty()) {
         try {
           journal.write(lines);
@@ -279,32 +252,29 @@ bool run_tasks(SweepState& state, const std::vector<std::int64_t>& todo,
     } catch (const std::exception& e) {
       failure.record(state.results.plan, task, e);
     }
-    progress.advance(static_cast<std::int64_t>(planners_of_task));
+    progress.advance(static_cast<std::int64_t>(planners.size()));
   });
-  progress.finish();
   return stopped.load() || state.cut.load();
 }
 
 }  // namespace
 
-SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
+void run_sweep(const SweepConfig& config, SweepResults& res, const SweepOptions& options) {
   check_shard(options);
-  SweepResults res = empty_results(config);
   res.shard_index = options.shard_index;
   res.shard_count = options.shard_count;
-  const MapTaskContext context(config);
+  const MapTaskContext context(config, res.plan, res.config_hash);
 
   const bool resume = !options.resume_path.empty();
   const std::string journal_path = journal_path_of(options);
-  if (resume)
-    res.restored_runs = restore_journal(options.resume_path, context.config_hash, res).records;
+  if (resume) res.restored_runs = restore_journal(options.resume_path, res).records;
   JournalWriter journal(journal_path, resume);
 
   res.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                             static_cast<std::size_t>(res.threads));
 
-  const std::vector<std::int64_t> todo = pending_tasks(res, options);
+  const Todo todo = pending_tasks(res, options);
   SweepState state(context, res, journal.enabled());
   FirstFailure failure;
   const auto t0 = std::chrono::steady_clock::now();
@@ -323,6 +293,11 @@ SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
   // Runs whose records may not have reached the disk: the sweep's record is not complete.
   if (!res.journal_error.empty()) res.complete = false;
   failure.rethrow();
+}
+
+SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {
+  SweepResults res = empty_results(config);
+  run_sweep(config, res, options);
   return res;
 }
 

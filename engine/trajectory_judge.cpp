@@ -84,6 +84,56 @@ std::string check_shape(const Grid& grid, Cell start, const Trajectory& tr) {
   return {};
 }
 
+// The verdict of a run without contact: the planner's end reason, confirmed.
+void judge_end(const Trajectory& tr, Cell goal, TrajectoryVerdict& out) {
+  const double to_goal = point_distance(tr.position.back(), centre(goal));
+  if (tr.end_reason == "reached") {
+    if (to_goal <= tr.goal_tolerance + kStartTolerance) {
+      out.outcome = Outcome::success;
+    } else {
+      out.outcome = Outcome::invalid_path;
+      out.message = text(
+          "trajectory claims to reach the goal but ends %.3f cells from it "
+          "(tolerance %.3f)",
+          to_goal, tr.goal_tolerance);
+    }
+  } else if (tr.end_reason == "timeout") {
+    out.outcome = Outcome::sim_timeout;
+    out.message = text("simulated time limit reached at t = %.1f s, %.2f cells from the goal",
+                       tr.t.back(), to_goal);
+  } else if (tr.end_reason == "stuck") {
+    out.outcome = Outcome::stuck;
+    out.message = text(
+        "no admissible moving velocity for too long at t = %.1f s, %.2f cells "
+        "from the goal",
+        tr.t.back(), to_goal);
+  } else if (tr.end_reason == "contact") {
+    out.outcome = Outcome::invalid_path;
+    out.message = "the planner reported a contact that the engine's judge does not confirm";
+  } else {
+    out.outcome = Outcome::invalid_path;
+    out.message = "trajectory: unknown end reason \"" + tr.end_reason + "\"";
+  }
+}
+
+// What the judge sums and minimises over the intervals, in cells and radians.
+struct TrajectoryTotals {
+  double travelled, heading_sum, abs_w, min_static, min_dynamic;
+};
+
+void add_metrics(const Trajectory& tr, const TrajectoryTotals& t, TrajectoryVerdict& out) {
+  const double edge = tr.cell_edge;
+  const std::size_t n = tr.position.size();
+  out.metrics.emplace_back("travelled_length", t.travelled * edge);
+  out.metrics.emplace_back("sim_time_s", tr.t.back());
+  out.metrics.emplace_back("control_steps", static_cast<double>(n - 1));
+  out.metrics.emplace_back("min_clearance_static", t.min_static * edge);
+  if (!tr.obstacles.empty())
+    out.metrics.emplace_back("min_clearance_dynamic", t.min_dynamic * edge);
+  out.metrics.emplace_back("heading_change_sum", t.heading_sum);
+  if (n > 1) out.metrics.emplace_back("mean_abs_w", t.abs_w / static_cast<double>(n - 1));
+}
+
 }  // namespace
 
 TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, const Trajectory& tr) {
@@ -95,7 +145,7 @@ TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, cons
   }
   const DistanceTransform& dt = grid.distance_transform();
   const std::size_t n = tr.position.size();
-  const double r = tr.robot_radius, edge = tr.cell_edge;
+  const double r = tr.robot_radius;
   const auto& pos = tr.position;
 
   // Static clearance at the samples, then exact chord minima only where a chord can go lower
@@ -156,46 +206,10 @@ TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, cons
     }
   }
 
-  if (!collided) {
-    const double to_goal = point_distance(pos.back(), centre(goal));
-    if (tr.end_reason == "reached") {
-      if (to_goal <= tr.goal_tolerance + kStartTolerance) {
-        out.outcome = Outcome::success;
-      } else {
-        out.outcome = Outcome::invalid_path;
-        out.message = text(
-            "trajectory claims to reach the goal but ends %.3f cells from it "
-            "(tolerance %.3f)",
-            to_goal, tr.goal_tolerance);
-      }
-    } else if (tr.end_reason == "timeout") {
-      out.outcome = Outcome::sim_timeout;
-      out.message = text("simulated time limit reached at t = %.1f s, %.2f cells from the goal",
-                         tr.t.back(), to_goal);
-    } else if (tr.end_reason == "stuck") {
-      out.outcome = Outcome::stuck;
-      out.message = text(
-          "no admissible moving velocity for too long at t = %.1f s, %.2f cells "
-          "from the goal",
-          tr.t.back(), to_goal);
-    } else if (tr.end_reason == "contact") {
-      out.outcome = Outcome::invalid_path;
-      out.message = "the planner reported a contact that the engine's judge does not confirm";
-    } else {
-      out.outcome = Outcome::invalid_path;
-      out.message = "trajectory: unknown end reason \"" + tr.end_reason + "\"";
-    }
-  }
-
+  if (!collided) judge_end(tr, goal, out);
   out.min_clearance = min_static;
   out.sim_time_s = tr.t.back();
-  out.metrics.emplace_back("travelled_length", travelled * edge);
-  out.metrics.emplace_back("sim_time_s", tr.t.back());
-  out.metrics.emplace_back("control_steps", static_cast<double>(n - 1));
-  out.metrics.emplace_back("min_clearance_static", min_static * edge);
-  if (!tr.obstacles.empty()) out.metrics.emplace_back("min_clearance_dynamic", min_dynamic * edge);
-  out.metrics.emplace_back("heading_change_sum", heading_sum);
-  if (n > 1) out.metrics.emplace_back("mean_abs_w", abs_w / static_cast<double>(n - 1));
+  add_metrics(tr, {travelled, heading_sum, abs_w, min_static, min_dynamic}, out);
   return out;
 }
 

@@ -35,7 +35,7 @@
 
 #include "algos/planner.h"
 #include "engine/metrics.h"
-#include "engine/run_executor.h"
+#include "engine/outcome.h"
 
 namespace agv {
 

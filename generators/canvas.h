@@ -9,13 +9,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/grid.h"
 #include "core/rng.h"
 
 namespace agv {
-
-// The largest grid side a generator draws (and the cap of every shape parameter's range: a
-// room or block wider than any grid changes nothing).
-inline constexpr int kMaxMapSide = 8192;
 
 class Canvas {
  public:

@@ -12,6 +12,7 @@
 
 #include "core/connectivity.h"
 #include "core/input_error.h"
+#include "core/json_reader.h"
 #include "core/text_file.h"
 #include "generators/occupancy_image.h"
 
@@ -34,41 +35,6 @@ std::string hex(std::uint64_t h) {
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
   return buf;
-}
-
-// The parameters of a map source: each key read once, an unknown one refused.
-class SourceParams {
- public:
-  SourceParams(const json& j, std::string where) : j_(j), where_(std::move(where)) {
-    if (!j_.is_object()) throw InputError(where_ + ": expected a JSON object");
-  }
-  const json* get(const std::string& key) {
-    seen_.insert(key);
-    return j_.contains(key) ? &j_.at(key) : nullptr;
-  }
-  std::string field(const std::string& key) const { return where_ + "." + key; }
-  void finish(const std::string& known) const {
-    for (const auto& [key, value] : j_.items()) {
-      (void)value;
-      if (!seen_.count(key))
-        throw InputError(field(key) + ": unknown field (known: " + known + ")");
-    }
-  }
-
- private:
-  const json& j_;
-  std::string where_;
-  std::set<std::string> seen_;
-};
-
-long long integer_in(const json& v, const std::string& field, long long lo, long long hi) {
-  if (!v.is_number_integer()) throw InputError(field + ": expected an integer, got " + v.dump());
-  if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi))
-    throw InputError(cat(field, ": ", v.dump(), " is outside [", lo, ", ", hi, "]"));
-  const auto x = v.get<long long>();
-  if (x < lo || x > hi)
-    throw InputError(cat(field, ": ", v.dump(), " is outside [", lo, ", ", hi, "]"));
-  return x;
 }
 
 // The cell names of a source's files: the file name, or the path as matched where two files
@@ -99,7 +65,7 @@ Grid with_cell_edge(const Grid& g, double cell_edge) {
   return out;
 }
 
-std::vector<std::string> read_files_param(SourceParams& p, const std::string& base_dir,
+std::vector<std::string> read_files_param(ObjectReader& p, const std::string& base_dir,
                                           json& resolved) {
   const json* files = p.get("files");
   if (files == nullptr)
@@ -110,7 +76,7 @@ std::vector<std::string> read_files_param(SourceParams& p, const std::string& ba
 
 MapFileSet load_movingai(const json& params, const std::string& base_dir, double cell_edge,
                          const std::string& where) {
-  SourceParams p(params, where);
+  ObjectReader p(params, where + ".", where);
   MapFileSet set;
   set.source = "movingai";
   set.resolved = json::object();
@@ -125,13 +91,15 @@ MapFileSet load_movingai(const json& params, const std::string& base_dir, double
   set.resolved["queries"] = queries;
   long long every = 1;
   if (const json* e = p.get("scen_every"))
-    every = integer_in(*e, p.field("scen_every"), 1, kMaxScenEvery);
+    every = ObjectReader::check_integer(*e, p.field("scen_every"), 1, kMaxScenEvery);
   long long bucket_lo = 0, bucket_hi = -1;
   if (const json* b = p.get("scen_buckets")) {
     if (!b->is_array() || b->size() != 2)
       throw InputError(p.field("scen_buckets") + ": expected [first, last] bucket numbers");
-    bucket_lo = integer_in((*b)[0], p.field("scen_buckets") + "[0]", 0, 1'000'000'000);
-    bucket_hi = integer_in((*b)[1], p.field("scen_buckets") + "[1]", bucket_lo, 1'000'000'000);
+    bucket_lo =
+        ObjectReader::check_integer((*b)[0], p.field("scen_buckets") + "[0]", 0, 1'000'000'000);
+    bucket_hi = ObjectReader::check_integer((*b)[1], p.field("scen_buckets") + "[1]", bucket_lo,
+                                            1'000'000'000);
     set.resolved["scen_buckets"] = {bucket_lo, bucket_hi};
   }
   if (set.queries != QuerySource::scen && (p.get("scen_every") || p.get("scen_buckets")))
@@ -172,7 +140,7 @@ MapFileSet load_movingai(const json& params, const std::string& base_dir, double
 
 MapFileSet load_image(const json& params, const std::string& base_dir, double cell_edge,
                       const std::string& where) {
-  SourceParams p(params, where);
+  ObjectReader p(params, where + ".", where);
   MapFileSet set;
   set.source = "image";
   set.resolved = json::object();

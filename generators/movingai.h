@@ -2,7 +2,7 @@
 // MovingAI benchmark formats (movingai.com/benchmarks/formats.html): `.map` reader and writer,
 // `.scen` reader. Readers accept CRLF, trailing blank lines and a map column holding a path;
 // malformed input throws InputError naming the file and line ("FILE:LINE: what is wrong").
-// Limits: a map side is at most 32768 cells and a map at most 2^28 cells.
+// Limits: a map side is at most kMaxMapSide (core/grid.h: 8192) cells, as every map source.
 
 #include <iosfwd>
 #include <string>

@@ -15,10 +15,6 @@
 namespace agv {
 namespace {
 
-// As the MovingAI reader's limits: a side of at most 32768 cells, at most 2^28 cells.
-constexpr long kMaxSide = 32768;
-constexpr std::int64_t kMaxCells = std::int64_t{1} << 28;
-
 template <class... Parts>
 std::string cat(const Parts&... parts) {
   std::ostringstream out;
@@ -33,10 +29,10 @@ std::string lower_extension(const std::string& path) {
 }
 
 void check_size(const std::string& name, long width, long height, int line) {
-  if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide ||
-      static_cast<std::int64_t>(width) * height > kMaxCells)
+  // The one map size limit (core/grid.h), as for generated maps and MovingAI files.
+  if (width < 1 || height < 1 || width > kMaxMapSide || height > kMaxMapSide)
     throw InputError(cat(name, ":", line, ": image size ", width, "x", height, " is outside 1..",
-                         kMaxSide, " per side or above 2^28 cells"));
+                         kMaxMapSide, " per side"));
 }
 
 // The PGM header's tokens (magic, width, height, maxval), '#' comments skipped, with the line

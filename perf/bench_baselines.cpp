@@ -24,22 +24,11 @@ namespace {
 
 constexpr int kMapsPerCase = 8;
 
-struct Case {
-  std::string name;
-  std::vector<MapInstance> maps;
-};
-
-Case uniform_case(int side, double density) {
-  const MapSpec spec = bench_uniform_spec(side, density, CornerRule::no_corner_cut);
-  Case c{bench_uniform_name(side, density), {}};
-  for (int i = 0; i < kMapsPerCase; ++i) {
-    Rng rng(2025, static_cast<std::uint64_t>(density * 10) * 1000 + static_cast<std::uint64_t>(i));
-    c.maps.push_back(make_map(spec, rng));
-  }
-  return c;
+BenchCase uniform_case(int side, double density) {
+  return bench_case("uniform", side, density, kMapsPerCase, 2025);
 }
 
-void run_case(benchmark::State& state, const Case& c, const Planner& planner) {
+void run_case(benchmark::State& state, const BenchCase& c, const Planner& planner) {
   Scratch scratch;
   std::int64_t work = 0;
   std::int64_t plans = 0;
@@ -91,9 +80,9 @@ void nearest_index(benchmark::State& state, NearestIndex index, double bucket_si
 int main(int argc, char** argv) {
   using namespace agv;
   benchmark::Initialize(&argc, argv);
-  static std::vector<std::unique_ptr<Case>> cases;
+  static std::vector<std::unique_ptr<BenchCase>> cases;
   for (double density : {0.1, 0.3})
-    cases.push_back(std::make_unique<Case>(uniform_case(64, density)));
+    cases.push_back(std::make_unique<BenchCase>(uniform_case(64, density)));
 
   struct Variant {
     std::string label;
@@ -114,7 +103,7 @@ int main(int argc, char** argv) {
     for (const auto& c : cases) {
       planners.push_back(configure_planner(v.planner, v.params, "bench"));
       const Planner* p = planners.back().planner.get();
-      const Case* cp = c.get();
+      const BenchCase* cp = c.get();
       benchmark::RegisterBenchmark((v.label + "/" + c->name).c_str(), [cp, p](benchmark::State& s) {
         run_case(s, *cp, *p);
       })->Unit(benchmark::kMillisecond);

@@ -27,25 +27,8 @@ namespace {
 
 constexpr int kMapsPerCase = 8;
 
-struct Case {
-  std::string name;
-  std::vector<MapInstance> maps;
-};
-
-Case make_case(const std::string& generator, int side, double density) {
-  MapSpec spec = bench_uniform_spec(side, density, CornerRule::no_corner_cut);
-  spec.generator = generator;
-  Case c{generator == "uniform" ? bench_uniform_name(side, density) : "", {}};
-  if (c.name.empty()) {
-    char name[64];
-    std::snprintf(name, sizeof name, "%s%d_d%.1f", generator.c_str(), side, density);
-    c.name = name;
-  }
-  for (int i = 0; i < kMapsPerCase; ++i) {
-    Rng rng(2026, static_cast<std::uint64_t>(density * 10) * 1000 + static_cast<std::uint64_t>(i));
-    c.maps.push_back(make_map(spec, rng));
-  }
-  return c;
+BenchCase make_case(const std::string& generator, int side, double density) {
+  return bench_case(generator, side, density, kMapsPerCase, 2026);
 }
 
 double length(const std::vector<Point>& path) {
@@ -55,7 +38,7 @@ double length(const std::vector<Point>& path) {
   return sum;
 }
 
-void run_case(benchmark::State& state, const Case& c, const Planner& planner) {
+void run_case(benchmark::State& state, const BenchCase& c, const Planner& planner) {
   Scratch scratch;
   std::int64_t samples = 0, plans = 0, successes = 0;
   double total_length = 0.0;
@@ -90,10 +73,10 @@ void run_case(benchmark::State& state, const Case& c, const Planner& planner) {
 int main(int argc, char** argv) {
   using namespace agv;
   benchmark::Initialize(&argc, argv);
-  static std::vector<std::unique_ptr<Case>> cases;
+  static std::vector<std::unique_ptr<BenchCase>> cases;
   for (double density : {0.1, 0.3})
-    cases.push_back(std::make_unique<Case>(make_case("uniform", 64, density)));
-  cases.push_back(std::make_unique<Case>(make_case("blocks", 64, 0.2)));
+    cases.push_back(std::make_unique<BenchCase>(make_case("uniform", 64, density)));
+  cases.push_back(std::make_unique<BenchCase>(make_case("blocks", 64, 0.2)));
 
   struct Variant {
     std::string label;
@@ -116,7 +99,7 @@ int main(int argc, char** argv) {
     for (const auto& c : cases) {
       planners.push_back(configure_planner(v.planner, v.params, "bench"));
       const Planner* p = planners.back().planner.get();
-      const Case* cp = c.get();
+      const BenchCase* cp = c.get();
       benchmark::RegisterBenchmark((v.label + "/" + c->name).c_str(), [cp, p](benchmark::State& s) {
         run_case(s, *cp, *p);
       })->Unit(benchmark::kMillisecond);

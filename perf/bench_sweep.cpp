@@ -5,6 +5,7 @@
 #include <fstream>
 #include <thread>
 
+#include "engine/config_loader.h"
 #include "engine/sweep_config.h"
 #include "engine/sweep_runner.h"
 
@@ -22,8 +23,8 @@ void bm_sweep(benchmark::State& state) {
   std::int64_t runs = 0;
   for (auto _ : state) {
     const agv::SweepResults r = agv::run_sweep(config, options);
-    runs += static_cast<std::int64_t>(r.runs.size());
-    benchmark::DoNotOptimize(r.runs.data());
+    for (const agv::CellResults& cell : r.cells) runs += static_cast<std::int64_t>(cell.runs.size());
+    benchmark::DoNotOptimize(r.cells.data());
   }
   state.counters["runs_per_s"] =
       benchmark::Counter(static_cast<double>(runs), benchmark::Counter::kIsRate);

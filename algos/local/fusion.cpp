@@ -248,14 +248,15 @@ PlannerSetup finish_setup(PlannerSetup ps, bool has_global) {
   return ps;
 }
 
-// The grid planners of the finished registry (the fusion entries themselves are made from the
-// same list while the registry is built, algos/registry.cpp).
-std::vector<std::string> registered_grid_planners() {
-  return planner_names(planner_registry(), PlannerKind::grid_search);
+// What the registry handed over when it built the fusion entries; a fusion planner is made only
+// from such an entry, so it is set before any is made (and never changes after).
+FusionRegistry& registry_view() {
+  static FusionRegistry view;
+  return view;
 }
 
 PlannerSetup setup_of(const FusionVariant& variant, const Params& params) {
-  return finish_setup(fusion_decls(variant, registered_grid_planners()).read(params),
+  return finish_setup(fusion_decls(variant, registry_view().grid_planners).read(params),
                       variant.global_default != nullptr);
 }
 
@@ -284,10 +285,10 @@ class FusionPlanner final : public Planner {
  public:
   explicit FusionPlanner(PlannerSetup setup) : s_(std::move(setup)) {
     // The reference path places the world's obstacles; it is the same for every planner.
-    reference_ =
-        configure_planner("astar", {{"corner_rule", "no_corner_cut"}}, "reference").planner;
+    const PlannerLookup& lookup = registry_view().lookup;
+    reference_ = lookup.make("astar", {{"corner_rule", "no_corner_cut"}}, "reference");
     if (s_.global_name.empty()) return;
-    const PlannerInfo* info = find_planner(s_.global_name);
+    const PlannerInfo* info = lookup.find(s_.global_name);
     // The choices are the registered grid planners, so a validated name is always found.
     if (info == nullptr) throw std::logic_error("global_planner not validated: " + s_.global_name);
     nlohmann::json given = global_planner_params(*info, s_.global_rule, s_.global_margin);
@@ -295,7 +296,7 @@ class FusionPlanner final : public Planner {
     const bool smooths = std::any_of(info->params.begin(), info->params.end(),
                                      [](const ParamSpec& p) { return p.name == "smoothing"; });
     if (!s_.goals_from_curve && smooths) given["smoothing"] = "none";
-    global_ = configure_planner(s_.global_name, given, "global_planner").planner;
+    global_ = lookup.make(s_.global_name, given, "global_planner");
   }
 
   PlanResult plan(const PlanRequest& req) const override {
@@ -418,18 +419,24 @@ const FusionVariant* find_variant(std::string_view name) {
 
 }  // namespace
 
-PlannerInfo dwa_planner() { return make_info<kDwa>({}); }
-
-PlannerInfo fusion_astar_dwa_planner(const std::vector<std::string>& grid_planners) {
-  return make_info<kAstarDwa>(grid_planners);
+PlannerInfo dwa_planner(const FusionRegistry& registry) {
+  registry_view() = registry;
+  return make_info<kDwa>({});
 }
 
-PlannerInfo fusion_alt_dwa_planner(const std::vector<std::string>& grid_planners) {
-  return make_info<kAltDwa>(grid_planners);
+PlannerInfo fusion_astar_dwa_planner(const FusionRegistry& registry) {
+  registry_view() = registry;
+  return make_info<kAstarDwa>(registry.grid_planners);
 }
 
-PlannerInfo fusion_kin_dwa_planner(const std::vector<std::string>& grid_planners) {
-  return make_info<kKinDwa>(grid_planners);
+PlannerInfo fusion_alt_dwa_planner(const FusionRegistry& registry) {
+  registry_view() = registry;
+  return make_info<kAltDwa>(registry.grid_planners);
+}
+
+PlannerInfo fusion_kin_dwa_planner(const FusionRegistry& registry) {
+  registry_view() = registry;
+  return make_info<kKinDwa>(registry.grid_planners);
 }
 
 nlohmann::json global_planner_params(const PlannerInfo& global, std::optional<CornerRule> rule,
@@ -444,11 +451,11 @@ nlohmann::json global_planner_params(const PlannerInfo& global, std::optional<Co
   return given;
 }
 
-FusionOptions fusion_options(const std::string& planner, const nlohmann::json& given) {
+FusionOptions fusion_options(const std::string& planner, const nlohmann::json& given,
+                             const std::vector<std::string>& grid_planners) {
   const FusionVariant* variant = find_variant(planner);
   if (variant == nullptr) throw std::invalid_argument("not a fusion planner: " + planner);
-  const std::vector<std::string> grid = registered_grid_planners();
-  return finish_setup(fusion_decls(*variant, grid).resolve(given, planner),
+  return finish_setup(fusion_decls(*variant, grid_planners).resolve(given, planner),
                       variant->global_default != nullptr)
       .drive;
 }

@@ -26,7 +26,7 @@
 #include <memory>
 #include <string>
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 #include "core/line_of_sight.h"
 #include "core/params.h"
 

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 
 namespace agv {
 

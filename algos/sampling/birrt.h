@@ -4,7 +4,7 @@
 // EXTENDs towards a sample, the other CONNECTs (extends repeatedly) towards the new node until it
 // reaches it or is trapped.
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 
 namespace agv {
 

@@ -4,7 +4,7 @@
 // to its k nearest neighbours (a nanoflann k-d tree) when the shared line-of-sight test holds, then
 // Dijkstra on the roadmap from the start to the goal. Single-query: the roadmap is built per plan.
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 
 namespace agv {
 

@@ -3,7 +3,7 @@
 // "Baselines"): one tree from the start, grown by fixed steps towards uniform samples of the map
 // (the goal with probability goal_bias), every edge checked with the shared line-of-sight test.
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 
 namespace agv {
 

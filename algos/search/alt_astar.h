@@ -1,7 +1,7 @@
 #pragma once
 // Alternative A* of paper 003 section 2 (docs/PLANNERS.md "Alternative A*").
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 
 namespace agv {
 

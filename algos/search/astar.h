@@ -1,7 +1,7 @@
 #pragma once
 // Classic A* (docs/PLANNERS.md "A* (classic)"): the "traditional A*" column of every paper.
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 
 namespace agv {
 

@@ -1,7 +1,7 @@
 #pragma once
 // Bidirectional A* (paper 002's baseline; docs/PLANNERS.md "Dijkstra, bidirectional A*").
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 
 namespace agv {
 

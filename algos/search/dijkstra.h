@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "algos/planner.h"
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 #include "core/corner_rule.h"
 #include "core/grid.h"
 

@@ -4,7 +4,7 @@
 // (`improved_astar_internal`, the planner of the paper's Table 4) and with the external part
 // (`improved_astar`, Table 5).
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 
 namespace agv {
 

@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 
 namespace agv {
 

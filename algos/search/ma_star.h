@@ -3,8 +3,8 @@
 
 #include <memory>
 
+#include "algos/planner_info.h"
 #include "algos/postprocess/postprocess_params.h"
-#include "algos/registry.h"
 #include "algos/search/grid_search_params.h"
 #include "core/params.h"
 

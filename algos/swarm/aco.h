@@ -3,7 +3,7 @@
 // colony" baseline of paper 002 section 5 with its Table 2 parameters as defaults (docs/PLANNERS.md
 // "Baselines"). Raw cell-centre path, no post-processing.
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 
 namespace agv {
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "algos/registry.h"
+#include "algos/planner_info.h"
 
 namespace agv {
 

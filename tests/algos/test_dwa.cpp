@@ -43,6 +43,12 @@
 namespace agv {
 namespace {
 
+// A registered fusion planner's control-loop options, its global planner one of the registry's.
+FusionOptions options_for(const std::string& planner, const nlohmann::json& given) {
+  return fusion_options(planner, given,
+                        planner_names(planner_registry(), PlannerKind::grid_search));
+}
+
 MapInstance random_map(double density, int index, int size = 20) {
   MapSpec spec;
   spec.width = spec.height = size;
@@ -223,7 +229,7 @@ TEST(Fusion, AllThreeVariantsRunWithMovingAndUnknownObstacles) {
 TEST(Fusion, HeadOnMovingObstacleIsAvoidedByImprovedDwa) {
   const Grid grid(20, 20);
   const Cell start{2, 10}, goal{17, 10};
-  const FusionOptions options = fusion_options("fusion_alt_dwa", nlohmann::json::object());
+  const FusionOptions options = options_for("fusion_alt_dwa", nlohmann::json::object());
   int avoided = 0;
   for (const double offset : {0.0, 0.1, -0.2}) {
     // A disc of radius 0.4 on the robot's line, coming straight at it at 0.5 m/s.
@@ -462,27 +468,27 @@ TEST(Fusion, GlobalMarginIsAFloorForTheGlobalPlannersShortcutMargin) {
 
 TEST(Fusion, OptionsFollowTheDeclaredParameters) {
   // Defaults per variant: the score's weights, sigma smoothing for following_004 only.
-  const FusionOptions kin = fusion_options("fusion_kin_dwa", nlohmann::json::object());
+  const FusionOptions kin = options_for("fusion_kin_dwa", nlohmann::json::object());
   EXPECT_EQ(kin.dwa.score, DwaScore::following_004);
   EXPECT_TRUE(kin.dwa.smoothing);
   EXPECT_DOUBLE_EQ(kin.dwa.weights.clearance, default_weights(DwaScore::following_004).clearance);
-  const FusionOptions alt = fusion_options("fusion_alt_dwa", nlohmann::json::object());
+  const FusionOptions alt = options_for("fusion_alt_dwa", nlohmann::json::object());
   EXPECT_EQ(alt.dwa.score, DwaScore::improved_003);
   EXPECT_FALSE(alt.dwa.smoothing);
   EXPECT_DOUBLE_EQ(alt.dwa.weights.dynamic, 0.35);
   EXPECT_TRUE(alt.aim_segment);
   EXPECT_TRUE(alt.turn_speed_limit);
   // Given values reach their fields; a weight of -1 keeps the score's default.
-  const FusionOptions given = fusion_options("fusion_astar_dwa", {{"w_velocity", 0.5},
-                                                                  {"w_heading", -1.0},
-                                                                  {"smoothing", "on"},
-                                                                  {"heading_aim", "key_point"},
-                                                                  {"heading_target", "final_goal"},
-                                                                  {"dist_mode", "clearance"},
-                                                                  {"dynamic_yield", true},
-                                                                  {"stuck_steps", 7},
-                                                                  {"v_samples", 3},
-                                                                  {"lookahead", 2.5}});
+  const FusionOptions given = options_for("fusion_astar_dwa", {{"w_velocity", 0.5},
+                                                               {"w_heading", -1.0},
+                                                               {"smoothing", "on"},
+                                                               {"heading_aim", "key_point"},
+                                                               {"heading_target", "final_goal"},
+                                                               {"dist_mode", "clearance"},
+                                                               {"dynamic_yield", true},
+                                                               {"stuck_steps", 7},
+                                                               {"v_samples", 3},
+                                                               {"lookahead", 2.5}});
   EXPECT_DOUBLE_EQ(given.dwa.weights.velocity, 0.5);
   EXPECT_DOUBLE_EQ(given.dwa.weights.heading, default_weights(DwaScore::classic).heading);
   EXPECT_TRUE(given.dwa.smoothing);
@@ -494,18 +500,18 @@ TEST(Fusion, OptionsFollowTheDeclaredParameters) {
   EXPECT_EQ(given.dwa.v_samples, 3);
   EXPECT_DOUBLE_EQ(given.lookahead, 2.5);
   // Pure DWA: heading at the goal itself, no turn speed limit, the goal tolerance for passing.
-  const FusionOptions dwa = fusion_options("dwa", {{"goal_tolerance", 0.7}});
+  const FusionOptions dwa = options_for("dwa", {{"goal_tolerance", 0.7}});
   EXPECT_FALSE(dwa.aim_segment);
   EXPECT_FALSE(dwa.turn_speed_limit);
   EXPECT_DOUBLE_EQ(dwa.waypoint_tolerance, 0.7);
   // A fusion-only parameter is unknown to pure DWA; errors name the field.
   try {
-    fusion_options("dwa", {{"lookahead", 1.0}});
+    options_for("dwa", {{"lookahead", 1.0}});
     ADD_FAILURE() << "dwa accepted lookahead";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("dwa.lookahead"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(fusion_options("fusion_alt_dwa", {{"robot_radius", 0.6}}), InputError);
+  EXPECT_THROW(options_for("fusion_alt_dwa", {{"robot_radius", 0.6}}), InputError);
 }
 
 // A kinematically consistent straight run: v m/s along +x from `start`'s centre, n steps.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/input_error.h"
+#include "engine/config_loader.h"
 #include "engine/sweep_config.h"
 
 namespace agv {

@@ -2,6 +2,7 @@
 // Test helper: every run of a sweep, in process and in task order, with the run's full output
 // (path included), through the same run_map_task the sweep uses.
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "engine/map_task.h"
@@ -11,7 +12,9 @@ namespace agv {
 
 template <class Check>
 void for_each_run(const SweepConfig& config, Check&& check) {
-  const MapTaskContext context(config);
+  const SweepPlan plan = plan_sweep(config);
+  const std::string hash = config_hash(config);
+  const MapTaskContext context(config, plan, hash);
   MapTaskWorkspace workspace;
   workspace.planners = configure_planners(config);
   std::vector<std::size_t> all(config.planners.size());

@@ -9,6 +9,7 @@
 #include "algos/registry.h"
 #include "core/collision_model.h"
 #include "core/input_error.h"
+#include "engine/config_loader.h"
 #include "engine/map_task.h"
 #include "engine/sweep_config.h"
 #include "engine/validator.h"

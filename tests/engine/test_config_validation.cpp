@@ -9,10 +9,12 @@
 #include <set>
 #include <string>
 
-#include "engine/cli_numbers.h"
+#include "cli/cli_numbers.h"
+#include "engine/config_loader.h"
 #include "engine/sweep_config.h"
 #include "engine/sweep_plan.h"
 #include "engine/sweep_runner.h"
+#include "engine/sweep_size.h"
 #include "tests/engine/config_error.h"
 
 namespace agv {

@@ -15,6 +15,7 @@
 #include "core/connectivity.h"
 #include "core/corner_rule.h"
 #include "core/rng.h"
+#include "engine/config_loader.h"
 #include "engine/sweep_config.h"
 #include "generators/map_generators.h"
 #include "generators/registry.h"

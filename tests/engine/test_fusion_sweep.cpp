@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "engine/config_loader.h"
 #include "engine/report.h"
 #include "engine/sweep_config.h"
 #include "engine/sweep_runner.h"

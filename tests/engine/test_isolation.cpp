@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "algos/registry.h"
+#include "engine/config_loader.h"
 #include "engine/isolated_worker.h"
 #include "engine/report.h"
 #include "engine/sweep_runner.h"

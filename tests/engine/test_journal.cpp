@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "engine/config_loader.h"
 #include "engine/journal.h"
 #include "engine/output_paths.h"
 #include "engine/report.h"
@@ -208,7 +209,7 @@ TEST(JournalWriter, AFileSizeLimitStopsTheSweepAndLeavesItIncomplete) {
   EXPECT_LT(coverage.runs_present, coverage.runs_expected);
   // What the results count as done is what the journal holds; its torn last line is cut.
   SweepResults restored = empty_results(config);
-  const JournalStats stats = restore_journal(options.runs_path, config_hash(config), restored);
+  const JournalStats stats = restore_journal(options.runs_path, restored);
   EXPECT_EQ(coverage.runs_present, 2);
   EXPECT_EQ(stats.records, coverage.runs_present);
   EXPECT_EQ(stats.torn_lines, 1);
@@ -232,7 +233,7 @@ TEST(JournalVersion, RestoreRefusesAForeignOrMissingVersionNamingFileAndLine) {
     const std::string path = s.path("edited.jsonl");
     write_file(path, text.substr(0, second) + edited.dump() + "\n");
     SweepResults res = empty_results(config);
-    return input_error([&] { restore_journal(path, config_hash(config), res); });
+    return input_error([&] { restore_journal(path, res); });
   };
   json foreign = record;
   foreign["journal_version"] = kJournalVersion + 1;

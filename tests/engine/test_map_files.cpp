@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/rng.h"
+#include "engine/config_loader.h"
 #include "engine/report.h"
 #include "engine/sweep_config.h"
 #include "engine/sweep_plan.h"

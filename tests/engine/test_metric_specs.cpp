@@ -10,6 +10,7 @@
 #include <string>
 
 #include "algos/registry.h"
+#include "engine/config_loader.h"
 #include "engine/metric_specs.h"
 #include "engine/report.h"
 #include "engine/run_executor.h"

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "algos/registry.h"
+#include "engine/config_loader.h"
 #include "engine/report.h"
 #include "engine/sweep_config.h"
 #include "engine/sweep_runner.h"

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "algos/registry.h"
+#include "engine/config_loader.h"
 #include "engine/map_task.h"
 #include "engine/sweep_config.h"
 #include "tests/engine/for_each_run.h"

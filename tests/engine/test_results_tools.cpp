@@ -12,9 +12,10 @@
 #include <set>
 #include <string>
 
+#include "cli/progress.h"
 #include "core/input_error.h"
+#include "engine/config_loader.h"
 #include "engine/environment.h"
-#include "engine/progress.h"
 #include "engine/report.h"
 #include "engine/report_compare.h"
 #include "engine/results_db.h"
@@ -283,10 +284,11 @@ TEST(ResultsDb, TwoSweepsTwoExperimentsEveryRunOnceAndNoDuplicate) {
   // Every finite metric of every run, once.
   std::int64_t metrics = 0;
   for (const SweepResults* r : {&a.results, &b.results})
-    for (const RunSlot& s : r->runs) {
-      for (double v : s.metrics) metrics += std::isfinite(v) ? 1 : 0;
-      for (const auto& [n, v] : s.extra) metrics += std::isfinite(v) ? 1 : 0;
-    }
+    for (const CellResults& cell : r->cells)
+      for (const RunSlot& s : cell.runs) {
+        for (double v : s.metrics) metrics += std::isfinite(v) ? 1 : 0;
+        for (const auto& [n, v] : s.extra) metrics += std::isfinite(v) ? 1 : 0;
+      }
   EXPECT_EQ(count(db, "select count(*) from run_metrics"), metrics);
   // The successes per planner and cell are the report's.
   for (const json& cell : a.report["cells"])

@@ -7,6 +7,7 @@
 #include <set>
 #include <string>
 
+#include "engine/config_loader.h"
 #include "engine/report.h"
 #include "engine/sweep_config.h"
 #include "engine/sweep_plan.h"

@@ -222,7 +222,8 @@ TEST(MovingAi, MalformedMapsNameTheLine) {
       {"type octile\nheight 1.5\nwidth 1\nmap\n.\n", 2, "not a whole number"},
       {"type octile\nheight 0\nwidth 1\nmap\n", 2, "outside"},
       {"type octile\nheight 1\nwidth 99999999\nmap\n", 3, "outside"},
-      {"type octile\nheight 30000\nwidth 30000\nmap\n", 3, "exceeds"},
+      // The one map size limit (core/grid.h kMaxMapSide), as for generated maps and images.
+      {"type octile\nheight 8193\nwidth 1\nmap\n", 2, "height 8193 is outside [1, 8192]"},
       {"type octile\nheight 1\nwidth 2\n", 4, "map"},
       {"type octile\nheight 1\nwidth 2\nmop\n..\n", 4, "map"},
       {"type octile\nheight 2\nwidth 2\nmap\n..\n", 6, "ends after 1"},

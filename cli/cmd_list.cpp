@@ -1,13 +1,14 @@
 // `agvbench list`: the planner and generator registries, as text or as one JSON object.
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "algos/registry.h"
+#include "cli/command.h"
 #include "core/input_error.h"
-#include "engine/commands.h"
 #include "engine/plugins.h"
 #include "generators/map_files.h"
 #include "generators/registry.h"
@@ -15,6 +16,14 @@
 namespace agv {
 
 namespace {
+
+// `list NAME... [--brief]`: only the named planners or generators (unknown: InputError);
+// json: one object {"planners": [...], "generators": [...], "map_sources": [...]}.
+struct ListOptions {
+  bool json = false;
+  bool brief = false;
+  std::vector<std::string> names;
+};
 
 void print_params(const std::vector<ParamSpec>& params) {
   for (const auto& p : params) {
@@ -71,14 +80,6 @@ nlohmann::json selected(const nlohmann::json& entries, const Selection& s) {
   for (const auto& e : entries)
     if (s.has(e.at("name").get<std::string>())) out.push_back(e);
   return out;
-}
-
-}  // namespace
-
-int command_list(bool as_json) {
-  ListOptions options;
-  options.json = as_json;
-  return command_list(options);
 }
 
 int command_list(const ListOptions& options) {
@@ -159,4 +160,16 @@ int command_list(const ListOptions& options) {
   return 0;
 }
 
+}  // namespace
+
+Command add_list_command(CLI::App& app) {
+  auto options = std::make_shared<ListOptions>();
+  auto* sub =
+      app.add_subcommand("list", "list planners and map generators, their parameters and defaults");
+  sub->add_flag("--json", options->json,
+                "print the registries as one JSON object {planners, generators}");
+  sub->add_option("names", options->names, "only these planners or generators");
+  sub->add_flag("--brief", options->brief, "one line per planner and generator");
+  return {sub, [options] { return command_list(*options); }};
+}
 }  // namespace agv

@@ -1,8 +1,13 @@
 // `agvbench export`: a sweep's journals as one experiment of an SQLite database.
 #include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
 
+#include "cli/command.h"
+#include "cli/locate_config.h"
 #include "core/input_error.h"
-#include "engine/commands.h"
+#include "engine/config_loader.h"
 #include "engine/environment.h"
 #include "engine/journal.h"
 #include "engine/output_paths.h"
@@ -10,6 +15,15 @@
 #include "engine/results_db.h"
 
 namespace agv {
+
+namespace {
+
+// A sweep's journals as one experiment of an SQLite database (engine/results_db.h).
+struct ExportCommand {
+  std::vector<std::string> journals;
+  std::string config;
+  std::string sqlite;
+};
 
 int command_export(const ExportCommand& cmd) {
   const std::string located = locate_config(cmd.config);
@@ -20,10 +34,9 @@ int command_export(const ExportCommand& cmd) {
   check_results_db(cmd.sqlite, "--sqlite");
   ignore_file_size_signal();
   SweepResults results = empty_results(config);
-  const std::string hash = config_hash(config);
   RunMessages messages;
   for (const auto& j : cmd.journals) {
-    restore_journal(j, hash, results);
+    restore_journal(j, results);
     read_run_messages(j, results, messages);
   }
   update_completeness(results);
@@ -42,4 +55,14 @@ int command_export(const ExportCommand& cmd) {
   return 0;
 }
 
+}  // namespace
+
+Command add_export_command(CLI::App& app) {
+  auto cmd = std::make_shared<ExportCommand>();
+  auto* sub = app.add_subcommand("export", "append a sweep's journals to an SQLite database");
+  sub->add_option("journals", cmd->journals, "JSON Lines journals")->required();
+  sub->add_option("--config", cmd->config, "the sweep config of the journals")->required();
+  sub->add_option("--sqlite", cmd->sqlite, "database (created or appended to)")->required();
+  return {sub, [cmd] { return command_export(*cmd); }, false};
+}
 }  // namespace agv

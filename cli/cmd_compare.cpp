@@ -2,15 +2,34 @@
 // planning times with a test (engine/report_compare.h).
 #include <cstdio>
 #include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
+#include "cli/command.h"
+#include "cli/option_checks.h"
 #include "core/input_error.h"
 #include "core/text_file.h"
-#include "engine/commands.h"
 #include "engine/report_compare.h"
 
 namespace agv {
 
 namespace {
+
+// Two reports compared (engine/report_compare.h): exit 0 no difference, 1 a non-timing
+// difference or a timing regression, 2 bad input (configs that differ beyond planner params).
+struct CompareCommand {
+  std::string before;
+  std::string after;
+  std::vector<std::string> runs_before;  // the sweeps' journals: per-run times, paired tests
+  std::vector<std::string> runs_after;
+  std::optional<double> fail_on_regression_pct;  // none: timing never fails
+  bool json = false;
+};
+
+// compare --fail-on-regression: percent of planning time.
+constexpr NumberRange kRegressionPctRange{0.0, 1e6};
 
 nlohmann::json read_report(const std::string& path, const std::string& what) {
   const std::string text = read_text_file(path, what);
@@ -20,8 +39,6 @@ nlohmann::json read_report(const std::string& path, const std::string& what) {
     throw InputError(what + " \"" + path + "\": malformed JSON (" + e.what() + ")");
   }
 }
-
-}  // namespace
 
 int command_compare(const CompareCommand& cmd) {
   if (cmd.runs_before.empty() != cmd.runs_after.empty())
@@ -56,4 +73,28 @@ int command_compare(const CompareCommand& cmd) {
   return c.exit_code();
 }
 
+}  // namespace
+
+Command add_compare_command(CLI::App& app) {
+  auto cmd = std::make_shared<CompareCommand>();
+  auto regression_pct = std::make_shared<double>(0.0);
+  auto* sub = app.add_subcommand(
+      "compare", "compare two reports: non-timing differences and planning-time ratios");
+  sub->add_option("before", cmd->before, "report BEFORE")->required();
+  sub->add_option("after", cmd->after, "report AFTER")->required();
+  sub->add_option("--runs-before", cmd->runs_before,
+                  "BEFORE's journals (per-run times: paired tests)");
+  sub->add_option("--runs-after", cmd->runs_after, "AFTER's journals");
+  auto* regression =
+      sub->add_option("--fail-on-regression", *regression_pct,
+                      "exit 1 when planning time grows by more than PCT percent (default: never)")
+          ->transform(number_in(kRegressionPctRange));
+  sub->add_flag("--json", cmd->json, "print the comparison as JSON");
+  return {sub,
+          [cmd, regression_pct, regression] {
+            if (*regression) cmd->fail_on_regression_pct = *regression_pct;
+            return command_compare(*cmd);
+          },
+          false};
+}
 }  // namespace agv

@@ -1,4 +1,4 @@
-#include "engine/cli_numbers.h"
+#include "cli/cli_numbers.h"
 
 #include <charconv>
 #include <cmath>

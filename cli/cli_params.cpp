@@ -1,6 +1,6 @@
-#include "engine/cli_params.h"
+#include "cli/cli_params.h"
 
-#include "engine/cli_numbers.h"
+#include "cli/cli_numbers.h"
 
 namespace agv {
 

@@ -1,0 +1,20 @@
+#include "engine/single_map.h"
+
+#include "engine/sweep_plan.h"
+
+namespace agv {
+
+MapInstance make_cell_map(const MapSpec& spec, const std::string& cell_key, std::uint64_t seed,
+                          int map_index) {
+  Rng rng = map_rng(seed, cell_key, map_index);
+  return make_map(spec, rng);
+}
+
+RunOutput run_on_map(const Planner& planner, MapReference& map, std::uint64_t seed,
+                     const std::string& cell_key, int map_index, const std::string& label,
+                     Scratch& scratch, Deadline deadline, const MotionTimeParams& motion) {
+  Rng rng = run_rng(seed, cell_key, map_index, label);
+  return execute_run(planner, map, rng, scratch, deadline, motion);
+}
+
+}  // namespace agv

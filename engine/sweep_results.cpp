@@ -1,0 +1,63 @@
+#include "engine/sweep_results.h"
+
+#include <limits>
+
+namespace agv {
+
+void SweepResults::store(std::int64_t task, std::size_t planner, RunSlot slot,
+                         const MapSlot& map_slot) {
+  slot.done = true;
+  run(task, planner) = std::move(slot);
+  MapSlot& ms = map(task);
+  if (!ms.done && map_slot.done) ms = map_slot;
+}
+
+std::vector<std::size_t> SweepResults::pending_planners(std::int64_t task) const {
+  std::vector<std::size_t> pending;
+  for (std::size_t p = 0; p < labels.size(); ++p)
+    if (scheduled(task, p) && !run(task, p).done) pending.push_back(p);
+  return pending;
+}
+
+SweepResults empty_results(const SweepConfig& config, SweepPlan plan) {
+  SweepResults res;
+  res.plan = std::move(plan);
+  res.config_hash = agv::config_hash(config);
+  for (const auto& p : config.planners) res.labels.push_back(p.label);
+  res.cells.resize(res.plan.cells.size());
+  for (const auto& cell : res.plan.cells) {
+    CellResults& c = res.cells[static_cast<std::size_t>(cell.index)];
+    c.maps.resize(static_cast<std::size_t>(cell.maps));
+    c.runs.resize(static_cast<std::size_t>(cell.maps) * res.labels.size());
+    for (auto& r : c.runs) r.metrics.fill(std::numeric_limits<double>::quiet_NaN());
+    for (const auto& p : config.planners) c.scoped_maps.push_back(scoped_maps(p, cell));
+  }
+  return res;
+}
+
+SweepResults empty_results(const SweepConfig& config) {
+  return empty_results(config, plan_sweep(config));
+}
+
+Coverage coverage_of(const SweepResults& r) {
+  Coverage c;
+  for (const auto& cell : r.plan.cells) {
+    const CellResults& slots = r.cells[static_cast<std::size_t>(cell.index)];
+    for (const int maps : slots.scoped_maps) c.runs_expected += maps;
+    for (int m = 0; m < cell.maps; ++m) {
+      bool any = false;
+      for (std::size_t p = 0; p < r.labels.size(); ++p) any = any || r.run(cell, m, p).done;
+      c.maps_missing += any ? 0 : 1;
+    }
+    for (const auto& s : slots.runs) c.runs_present += s.done ? 1 : 0;
+  }
+  return c;
+}
+
+void update_completeness(SweepResults& results) {
+  // Only scheduled runs can be done: the runner skips the others and the journal refuses them.
+  const Coverage c = coverage_of(results);
+  results.complete = c.runs_present == c.runs_expected;
+}
+
+}  // namespace agv

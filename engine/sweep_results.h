@@ -1,0 +1,124 @@
+#pragma once
+// The results model of a sweep: what is kept of each run and map, grouped by cell, and how much
+// of the sweep is present. Filled by the runner (engine/sweep_runner.h), by resume and merge from
+// journals (engine/journal.h), and read by the report, compare and the SQLite writer. Every run
+// reaches its slot one way, SweepResults::store: a run in process as its RunOutput made a slot
+// (engine/run_record.h run_slot_of), an isolated worker's run and a journal's as the record
+// decoded (engine/journal.h RecordRestorer), so the two modes cannot fill a slot differently.
+//
+// Cells are the unit: a cell's map tasks are contiguous in the plan (engine/sweep_plan.h), and
+// its slots live in a CellResults of their own, so a cell can be summarised and released once
+// its runs are complete.
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "algos/planner.h"
+#include "engine/outcome.h"
+#include "engine/run_metrics.h"
+#include "engine/sweep_plan.h"
+
+namespace agv {
+
+// What is kept of one run after its record has been streamed.
+struct RunSlot {
+  bool done = false;
+  Outcome outcome = Outcome::crash;
+  RunMetrics metrics{};
+  std::int64_t plan_time_ns = 0;
+  std::vector<PhaseTime> phases;
+  std::vector<std::pair<std::string, double>> extra;
+};
+
+// What is kept of one map.
+struct MapSlot {
+  bool done = false;
+  int rejections = 0;
+  double obstacle_fraction = 0.0;
+};
+
+// One cell's slots.
+struct CellResults {
+  std::vector<MapSlot> maps;  // by map index
+  std::vector<RunSlot> runs;  // by map index * planners + planner
+  // By planner: it runs on the cell's first N maps (its scope).
+  std::vector<int> scoped_maps;
+};
+
+struct SweepResults {
+  SweepPlan plan;
+  std::string config_hash;          // engine/sweep_config.h config_hash, computed once
+  std::vector<std::string> labels;  // planner labels, config order
+  std::vector<CellResults> cells;   // by cell index
+  double wall_s = 0.0;
+  int threads = 0;
+  bool complete = true;      // every scheduled run of the sweep is present
+  bool interrupted = false;  // stopped before its tasks were done
+  std::int64_t restored_runs = 0;
+  std::int64_t executed_runs = 0;
+  int shard_index = 0;
+  int shard_count = 1;
+  // Set when a journal write failed: the sweep stopped taking tasks, the runs the journal lost
+  // are not counted as done and `complete` is false (the message names the journal and the OS
+  // error).
+  std::string journal_error;
+
+  int maps_of(const SweepCell& cell, std::size_t planner) const {
+    return cells[static_cast<std::size_t>(cell.index)].scoped_maps[planner];
+  }
+  // Whether the sweep runs this planner on this map task at all.
+  bool scheduled(std::int64_t task, std::size_t planner) const {
+    return plan.map_index_of(task) < maps_of(plan.cell_of(task), planner);
+  }
+  RunSlot& run(const SweepCell& cell, int map_index, std::size_t planner) {
+    return cells[static_cast<std::size_t>(cell.index)]
+        .runs[static_cast<std::size_t>(map_index) * labels.size() + planner];
+  }
+  const RunSlot& run(const SweepCell& cell, int map_index, std::size_t planner) const {
+    return cells[static_cast<std::size_t>(cell.index)]
+        .runs[static_cast<std::size_t>(map_index) * labels.size() + planner];
+  }
+  RunSlot& run(std::int64_t task, std::size_t planner) {
+    const SweepCell& cell = plan.cell_of(task);
+    return run(cell, static_cast<int>(task - cell.first_task), planner);
+  }
+  const RunSlot& run(std::int64_t task, std::size_t planner) const {
+    const SweepCell& cell = plan.cell_of(task);
+    return run(cell, static_cast<int>(task - cell.first_task), planner);
+  }
+  MapSlot& map(std::int64_t task) {
+    const SweepCell& cell = plan.cell_of(task);
+    return cells[static_cast<std::size_t>(cell.index)]
+        .maps[static_cast<std::size_t>(task - cell.first_task)];
+  }
+  const MapSlot& map(std::int64_t task) const {
+    const SweepCell& cell = plan.cell_of(task);
+    return cells[static_cast<std::size_t>(cell.index)]
+        .maps[static_cast<std::size_t>(task - cell.first_task)];
+  }
+  // Puts a finished run and its map into their slots (the map's only when it is not there yet:
+  // every run of a task shares one map).
+  void store(std::int64_t task, std::size_t planner, RunSlot slot, const MapSlot& map_slot);
+  // The planners of `task` still to run: scheduled there and not done, in config order.
+  std::vector<std::size_t> pending_planners(std::int64_t task) const;
+};
+
+// How much of a sweep's results are present: the report's `coverage`.
+struct Coverage {
+  std::int64_t runs_expected = 0;  // scheduled runs (planner scopes counted)
+  std::int64_t runs_present = 0;
+  std::int64_t maps_missing = 0;  // map tasks with no run at all
+};
+Coverage coverage_of(const SweepResults& results);
+
+// Empty results shaped for the config and its plan: every slot present, none done (the runner,
+// resume and merge fill them).
+SweepResults empty_results(const SweepConfig& config, SweepPlan plan);
+// The same, planning the config itself.
+SweepResults empty_results(const SweepConfig& config);
+// Recomputes `complete` (every scheduled run present) from the slots.
+void update_completeness(SweepResults& results);
+
+}  // namespace agv

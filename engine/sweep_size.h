@@ -1,0 +1,31 @@
+#pragma once
+// How much memory a sweep's results hold while it runs, estimated from the config alone, and the
+// refusal of a config whose results would not fit (engine/config_loader.h checks every config).
+
+#include <string>
+
+#include "engine/sweep_config.h"
+
+namespace agv {
+
+// What a sweep holds in memory while it runs (engine/sweep_results.h): its cells, a
+// map slot and a to-do entry per map task, a run slot per map task and planner (scheduled or
+// not), and the phase times and extra metrics each run leaves in its slot. Counted from the
+// config alone, without expanding the plan, so a config too large to plan is refused as well.
+struct SweepSize {
+  double cells = 0;  // doubles: a hostile config's products must not overflow
+  double map_tasks = 0;
+  double run_slots = 0;
+  double scheduled_runs = 0;
+  double bytes = 0;  // estimate
+};
+SweepSize sweep_size(const SweepConfig& config);
+// Physical memory, or the cgroup's memory.max when that is lower; 0 when neither is known.
+double usable_memory_bytes();
+// InputError naming maps_per_cell when the estimate exceeds half of usable_memory_bytes() (the
+// rest is headroom: the maps, planner scratch and the report being built).
+void check_sweep_size(const SweepConfig& config);
+// "1.5 GiB"
+std::string bytes_text(double bytes);
+
+}  // namespace agv

@@ -23,7 +23,8 @@ void bm_sweep(benchmark::State& state) {
   std::int64_t runs = 0;
   for (auto _ : state) {
     const agv::SweepResults r = agv::run_sweep(config, options);
-    for (const agv::CellResults& cell : r.cells) runs += static_cast<std::int64_t>(cell.runs.size());
+    for (const agv::CellResults& cell : r.cells)
+      runs += static_cast<std::int64_t>(cell.runs.size());
     benchmark::DoNotOptimize(r.cells.data());
   }
   state.counters["runs_per_s"] =

@@ -15,7 +15,7 @@
 #include "engine/report.h"
 #include "engine/sweep_runner.h"
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if AGV_SANITIZED_BUILD  // tests/CMakeLists.txt: ASan, TSan or the fuzz tree, GCC or clang
 constexpr bool kSanitized = true;  // sanitizers reserve terabytes of address space: no RLIMIT_AS
 #else
 constexpr bool kSanitized = false;

@@ -19,9 +19,9 @@ std::vector<std::size_t> SweepResults::pending_planners(std::int64_t task) const
   return pending;
 }
 
-SweepResults empty_results(const SweepConfig& config, SweepPlan plan) {
+SweepResults empty_results(const SweepConfig& config) {
   SweepResults res;
-  res.plan = std::move(plan);
+  res.plan = plan_sweep(config);
   res.config_hash = agv::config_hash(config);
   for (const auto& p : config.planners) res.labels.push_back(p.label);
   res.cells.resize(res.plan.cells.size());
@@ -33,10 +33,6 @@ SweepResults empty_results(const SweepConfig& config, SweepPlan plan) {
     for (const auto& p : config.planners) c.scoped_maps.push_back(scoped_maps(p, cell));
   }
   return res;
-}
-
-SweepResults empty_results(const SweepConfig& config) {
-  return empty_results(config, plan_sweep(config));
 }
 
 Coverage coverage_of(const SweepResults& r) {

@@ -113,10 +113,8 @@ struct Coverage {
 };
 Coverage coverage_of(const SweepResults& results);
 
-// Empty results shaped for the config and its plan: every slot present, none done (the runner,
-// resume and merge fill them).
-SweepResults empty_results(const SweepConfig& config, SweepPlan plan);
-// The same, planning the config itself.
+// Empty results shaped for the config: its plan and hash, made once here, and every slot
+// present, none done (the runner, resume and merge fill them).
 SweepResults empty_results(const SweepConfig& config);
 // Recomputes `complete` (every scheduled run present) from the slots.
 void update_completeness(SweepResults& results);

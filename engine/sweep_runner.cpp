@@ -36,7 +36,6 @@ std::string journal_path_of(const SweepOptions& options) {
   return options.resume_path;
 }
 
-// The map tasks of this call's shard with a planner still to run.
 // The map tasks of this call's shard with a planner still to run, and how many runs they hold
 // (progress counts runs: map tasks differ in planners, by scopes and resumes).
 struct Todo {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/distance_transform.h"
+#include "core/numbers.h"
 #include "engine/statistics.h"
 
 namespace agv {
@@ -14,7 +15,6 @@ namespace {
 
 // Difference of two headings wrapped to (-pi, pi].
 double wrapped_turn(double from, double to) {
-  constexpr double kPi = std::numbers::pi;
   double d = to - from;  // in (-2 pi, 2 pi)
   if (d > kPi) d -= 2.0 * kPi;
   if (d <= -kPi) d += 2.0 * kPi;

@@ -23,9 +23,9 @@ namespace agv {
 
 using nlohmann::json;
 
-namespace {
-
 json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+namespace {
 
 json summary_json(const Summary& s) {
   return {{"count", s.count},

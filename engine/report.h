@@ -14,6 +14,9 @@ inline constexpr int kReportSchemaVersion = 2;
 
 nlohmann::json build_report(const SweepConfig& config, const SweepResults& results);
 
+// A statistic as the report writes it: null where it is not finite (JSON has no NaN or inf).
+nlohmann::json number_or_null(double v);
+
 // Temporary file in the same folder, fsync, rename: a reader (or a crash) sees the old report or
 // the new one, never a torn one. The folder must exist (engine/output_paths.h checks it before a
 // sweep); temporaries of this path left by a process that is gone are removed first. Throws

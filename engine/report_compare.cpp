@@ -293,8 +293,6 @@ const char* test_name(TimingTest t) {
   return "none";
 }
 
-json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
 std::string fixed(double v, int digits) {
   if (!std::isfinite(v)) return "-";
   char buf[64];

@@ -8,12 +8,12 @@
 #include "algos/local/unicycle.h"
 #include "core/cell_geometry.h"
 #include "core/distance_transform.h"
+#include "core/numbers.h"
 
 namespace agv {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kContactTolerance = 1e-12;  // cells
 constexpr double kStartTolerance = 1e-9;     // cells
 constexpr double kPositionTolerance = 1e-6;  // cells, kinematic replay

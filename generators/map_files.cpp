@@ -13,6 +13,7 @@
 #include "core/connectivity.h"
 #include "core/input_error.h"
 #include "core/json_reader.h"
+#include "core/str_cat.h"
 #include "core/text_file.h"
 #include "generators/occupancy_image.h"
 
@@ -23,13 +24,6 @@ using nlohmann::json;
 
 constexpr int kEndpointTries = 1000;  // as generated maps (generators/map_generators.cpp)
 constexpr long long kMaxScenEvery = 1'000'000'000;
-
-template <class... Parts>
-std::string cat(const Parts&... parts) {
-  std::ostringstream out;
-  (out << ... << parts);
-  return out.str();
-}
 
 std::string hex(std::uint64_t h) {
   char buf[17];
@@ -130,7 +124,8 @@ MapFileSet load_movingai(const json& params, const std::string& base_dir, double
       if (f.queries.empty())
         throw InputError(
             scen + ": no query selected (scen_buckets " +
-            (bucket_hi < 0 ? std::string("all") : cat("[", bucket_lo, ", ", bucket_hi, "]")) + ")");
+            (bucket_hi < 0 ? std::string("all") : str_cat("[", bucket_lo, ", ", bucket_hi, "]")) +
+            ")");
     }
     f.content_hash = hex(stable_hash(bytes));
     set.files.push_back(std::move(f));
@@ -200,7 +195,7 @@ std::vector<std::string> expand_file_patterns(const json& patterns, const std::s
   std::vector<std::string> out;
   std::map<std::string, std::size_t> seen;  // canonical path -> pattern index
   for (std::size_t i = 0; i < patterns.size(); ++i) {
-    const std::string f = cat(where, "[", i, "]");
+    const std::string f = str_cat(where, "[", i, "]");
     if (!patterns[i].is_string() || patterns[i].get<std::string>().empty())
       throw InputError(f + ": expected a path or glob pattern");
     const std::string pattern = patterns[i].get<std::string>();
@@ -224,8 +219,8 @@ std::vector<std::string> expand_file_patterns(const json& patterns, const std::s
       const std::string canonical = std::filesystem::weakly_canonical(m, ec).string();
       const auto [it, added] = seen.emplace(ec ? m : canonical, i);
       if (!added)
-        throw InputError(cat(f, ": \"", m, "\" is also matched by ", where, "[", it->second,
-                             "] (each file is one cell: name it once)"));
+        throw InputError(str_cat(f, ": \"", m, "\" is also matched by ", where, "[", it->second,
+                                 "] (each file is one cell: name it once)"));
       out.push_back(m);
     }
   }
@@ -242,23 +237,23 @@ void check_file_endpoints(const MapFile& file, const MapSpec& spec) {
     const Cell goal = fixed ? spec.goal : Cell{g.width() - 1, 0};
     for (const auto& [c, what] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
       if (c.x < 0 || c.y < 0 || c.x >= g.width() || c.y >= g.height())
-        throw InputError(cat(file.path, ": map.", what, ": (", c.x, ", ", c.y, ") is outside the ",
-                             g.width(), "x", g.height(), " map"));
+        throw InputError(str_cat(file.path, ": map.", what, ": (", c.x, ", ", c.y,
+                                 ") is outside the ", g.width(), "x", g.height(), " map"));
       if (g.blocked(c))
-        throw InputError(cat(file.path, ": map.endpoints ", rule, ": the ", what,
-                             fixed ? "" : " corner", " (", c.x, ", ", c.y, ") is an obstacle"));
+        throw InputError(str_cat(file.path, ": map.endpoints ", rule, ": the ", what,
+                                 fixed ? "" : " corner", " (", c.x, ", ", c.y, ") is an obstacle"));
     }
     if (spec.require_solvable && !connected(g, start, goal, spec.solvable_rule))
-      throw InputError(cat(file.path, ": map.endpoints ", rule, ": (", start.x, ", ", start.y,
-                           ") and (", goal.x, ", ", goal.y, ") are not connected under ",
-                           to_string(spec.solvable_rule), " (map.require_solvable)"));
+      throw InputError(str_cat(file.path, ": map.endpoints ", rule, ": (", start.x, ", ", start.y,
+                               ") and (", goal.x, ", ", goal.y, ") are not connected under ",
+                               to_string(spec.solvable_rule), " (map.require_solvable)"));
     return;
   }
   const double diagonal = std::hypot(g.width() - 1.0, g.height() - 1.0);
   if (spec.min_distance > diagonal)
-    throw InputError(cat("map.min_distance: ", spec.min_distance, " is outside [0, ", diagonal,
-                         "] (the corner-to-corner distance of ", file.path, ", ", g.width(), "x",
-                         g.height(), ")"));
+    throw InputError(str_cat("map.min_distance: ", spec.min_distance, " is outside [0, ", diagonal,
+                             "] (the corner-to-corner distance of ", file.path, ", ", g.width(),
+                             "x", g.height(), ")"));
   if (g.free_count() < 2) throw InputError(file.path + ": fewer than two free cells");
 }
 
@@ -296,10 +291,10 @@ FileQuery file_query(const MapFile& file, QuerySource queries, int map_index, co
       return {start, goal, attempt, -1.0};
     }
   }
-  throw std::runtime_error(cat("random endpoints on ", file.path,
-                               ": no two free cells min_distance = ", spec.min_distance, " apart",
-                               spec.require_solvable ? " and connected" : "", " found in ",
-                               spec.max_attempts, " draws"));
+  throw std::runtime_error(str_cat("random endpoints on ", file.path,
+                                   ": no two free cells min_distance = ", spec.min_distance,
+                                   " apart", spec.require_solvable ? " and connected" : "",
+                                   " found in ", spec.max_attempts, " draws"));
 }
 
 }  // namespace agv

@@ -22,6 +22,7 @@
 
 #include "core/connectivity.h"
 #include "core/input_error.h"
+#include "core/str_cat.h"
 #include "generators/canvas.h"
 #include "generators/registry.h"
 
@@ -31,13 +32,6 @@ namespace {
 constexpr int kMinSide = 2;
 constexpr int kEndpointTries = 1000;
 
-template <class... Parts>
-std::string cat(const Parts&... parts) {
-  std::ostringstream out;
-  (out << ... << parts);
-  return out.str();
-}
-
 // The common map options; then the generator and its shape parameters, through the registry's
 // one declaration of each (so make_map and config loading cannot disagree on a range).
 Params validate(const MapSpec& s, const GeneratorInfo*& info) {
@@ -45,25 +39,27 @@ Params validate(const MapSpec& s, const GeneratorInfo*& info) {
   if (info == nullptr) {
     std::string known;
     for (const auto& g : generator_registry()) known += (known.empty() ? "" : ", ") + g.name;
-    throw std::invalid_argument(cat("generator: '", s.generator, "' is not one of ", known));
+    throw std::invalid_argument(str_cat("generator: '", s.generator, "' is not one of ", known));
   }
   if (s.width < kMinSide || s.width > kMaxMapSide) {
-    throw std::invalid_argument(cat("width: ", s.width, " is outside [2, ", kMaxMapSide, "]"));
+    throw std::invalid_argument(str_cat("width: ", s.width, " is outside [2, ", kMaxMapSide, "]"));
   }
   if (s.height < kMinSide || s.height > kMaxMapSide) {
-    throw std::invalid_argument(cat("height: ", s.height, " is outside [2, ", kMaxMapSide, "]"));
+    throw std::invalid_argument(
+        str_cat("height: ", s.height, " is outside [2, ", kMaxMapSide, "]"));
   }
   if (!(s.density >= 0.0 && s.density < 1.0)) {
-    throw std::invalid_argument(cat("density: ", s.density, " is outside [0, 1)"));
+    throw std::invalid_argument(str_cat("density: ", s.density, " is outside [0, 1)"));
   }
   if (!(s.cell_edge > 0.0 && std::isfinite(s.cell_edge))) {
-    throw std::invalid_argument(cat("cell_edge: ", s.cell_edge, " must be positive and finite"));
+    throw std::invalid_argument(
+        str_cat("cell_edge: ", s.cell_edge, " must be positive and finite"));
   }
   const double diagonal = std::hypot(s.width - 1.0, s.height - 1.0);
   if (!(s.min_distance >= 0.0 && s.min_distance <= diagonal)) {
-    throw std::invalid_argument(cat("min_distance: ", s.min_distance, " is outside [0, ", diagonal,
-                                    "] (the ", s.width, "x", s.height,
-                                    " grid's corner-to-corner distance)"));
+    throw std::invalid_argument(str_cat("min_distance: ", s.min_distance, " is outside [0, ",
+                                        diagonal, "] (the ", s.width, "x", s.height,
+                                        " grid's corner-to-corner distance)"));
   }
   if (s.endpoints == EndpointMode::fixed) {
     const auto outside = [&](const Cell& c) {
@@ -71,18 +67,18 @@ Params validate(const MapSpec& s, const GeneratorInfo*& info) {
     };
     for (const auto& [name, c] : {std::pair{"start", s.start}, std::pair{"goal", s.goal}}) {
       if (outside(c)) {
-        throw std::invalid_argument(cat(name, ": [", c.x, ", ", c.y, "] is outside the ", s.width,
-                                        "x", s.height, " grid (0-based cells: x in [0, ",
-                                        s.width - 1, "], y in [0, ", s.height - 1, "])"));
+        throw std::invalid_argument(str_cat(
+            name, ": [", c.x, ", ", c.y, "] is outside the ", s.width, "x", s.height,
+            " grid (0-based cells: x in [0, ", s.width - 1, "], y in [0, ", s.height - 1, "])"));
       }
     }
     if (s.start == s.goal) {
       throw std::invalid_argument(
-          cat("goal: [", s.goal.x, ", ", s.goal.y, "] is the start cell (they must differ)"));
+          str_cat("goal: [", s.goal.x, ", ", s.goal.y, "] is the start cell (they must differ)"));
     }
   }
   if (s.max_attempts < 1) {
-    throw std::invalid_argument(cat("max_attempts: ", s.max_attempts, " must be at least 1"));
+    throw std::invalid_argument(str_cat("max_attempts: ", s.max_attempts, " must be at least 1"));
   }
   try {
     return resolve_generator_params(*info, s.params, "params", s.width, s.height);
@@ -177,19 +173,19 @@ MapInstance make_map(const MapSpec& spec, Rng& rng) {
     return out;
   }
   const std::string what =
-      cat(spec.generator, " ", spec.width, "x", spec.height, " at density ", spec.density);
+      str_cat(spec.generator, " ", spec.width, "x", spec.height, " at density ", spec.density);
   if (blocked_maps == spec.max_attempts) {
-    throw std::runtime_error(cat("fixed endpoints: the generator blocked start or goal on all ",
-                                 spec.max_attempts, " maps (", what, ")"));
+    throw std::runtime_error(str_cat("fixed endpoints: the generator blocked start or goal on all ",
+                                     spec.max_attempts, " maps (", what, ")"));
   }
   if (endpoints_failed) {
     throw std::runtime_error(
-        cat("random endpoints: no two free cells min_distance = ", spec.min_distance,
-            " apart found on ", spec.max_attempts, " maps (", what, ")"));
+        str_cat("random endpoints: no two free cells min_distance = ", spec.min_distance,
+                " apart found on ", spec.max_attempts, " maps (", what, ")"));
   }
-  throw std::runtime_error(cat("require_solvable: start and goal not connected under ",
-                               to_string(spec.solvable_rule), " in ", spec.max_attempts, " maps (",
-                               what, ")"));
+  throw std::runtime_error(str_cat("require_solvable: start and goal not connected under ",
+                                   to_string(spec.solvable_rule), " in ", spec.max_attempts,
+                                   " maps (", what, ")"));
 }
 
 }  // namespace agv

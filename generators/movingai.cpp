@@ -9,17 +9,11 @@
 #include <sstream>
 #include <string_view>
 
+#include "core/str_cat.h"
 #include "core/text_file.h"
 
 namespace agv {
 namespace {
-
-template <class... Parts>
-std::string cat(const Parts&... parts) {
-  std::ostringstream out;
-  (out << ... << parts);
-  return out.str();
-}
 
 // Lines with their 1-based numbers; a trailing '\r' (CRLF files) is dropped.
 class LineReader {
@@ -33,7 +27,7 @@ class LineReader {
   }
   int line() const { return line_; }
   [[noreturn]] void fail(int line, const std::string& what) const {
-    throw InputError(cat(name_, ":", line, ": ", what));
+    throw InputError(str_cat(name_, ":", line, ": ", what));
   }
   [[noreturn]] void fail(const std::string& what) const { fail(line_, what); }
 
@@ -80,17 +74,19 @@ bool parse_double(std::string_view s, double& value) {
 // "height 512" -> 512, checked against [1, kMaxMapSide].
 int parse_size_line(LineReader& reader, const std::string& text, std::string_view key) {
   const auto t = tokens(text);
-  if (t.size() != 2 || t[0] != key) reader.fail(cat("expected '", key, " N', found '", text, "'"));
+  if (t.size() != 2 || t[0] != key)
+    reader.fail(str_cat("expected '", key, " N', found '", text, "'"));
   long long v = 0;
-  if (!parse_int(t[1], v)) reader.fail(cat(key, " '", t[1], "' is not a whole number"));
-  if (v < 1 || v > kMaxMapSide) reader.fail(cat(key, " ", v, " is outside [1, ", kMaxMapSide, "]"));
+  if (!parse_int(t[1], v)) reader.fail(str_cat(key, " '", t[1], "' is not a whole number"));
+  if (v < 1 || v > kMaxMapSide)
+    reader.fail(str_cat(key, " ", v, " is outside [1, ", kMaxMapSide, "]"));
   return static_cast<int>(v);
 }
 
 std::string describe(char c) {
   const auto u = static_cast<unsigned char>(c);
-  if (u >= 0x21 && u < 0x7f) return cat("'", c, "'");
-  return cat("byte 0x", std::hex, static_cast<int>(u));
+  if (u >= 0x21 && u < 0x7f) return str_cat("'", c, "'");
+  return str_cat("byte 0x", std::hex, static_cast<int>(u));
 }
 
 }  // namespace
@@ -99,11 +95,12 @@ Grid parse_map(std::istream& in, const std::string& name) {
   LineReader reader(in, name);
   std::string text;
   auto header = [&](std::string_view what) {
-    if (!reader.next(text)) reader.fail(reader.line() + 1, cat("file ends before '", what, "'"));
+    if (!reader.next(text))
+      reader.fail(reader.line() + 1, str_cat("file ends before '", what, "'"));
   };
   header("type octile");
   if (const auto t = tokens(text); t.size() != 2 || t[0] != "type" || t[1] != "octile") {
-    reader.fail(cat("expected 'type octile', found '", text, "'"));
+    reader.fail(str_cat("expected 'type octile', found '", text, "'"));
   }
   header("height");
   const int height = parse_size_line(reader, text, "height");
@@ -111,16 +108,17 @@ Grid parse_map(std::istream& in, const std::string& name) {
   const int width = parse_size_line(reader, text, "width");
   header("map");
   if (const auto t = tokens(text); t.size() != 1 || t[0] != "map") {
-    reader.fail(cat("expected 'map', found '", text, "'"));
+    reader.fail(str_cat("expected 'map', found '", text, "'"));
   }
 
   Grid grid(width, height);
   for (int y = 0; y < height; ++y) {
     if (!reader.next(text)) {
-      reader.fail(reader.line() + 1, cat("file ends after ", y, " map rows, expected ", height));
+      reader.fail(reader.line() + 1,
+                  str_cat("file ends after ", y, " map rows, expected ", height));
     }
     if (std::ssize(text) != width) {
-      reader.fail(cat("map row ", y, " has ", text.size(), " characters, expected ", width));
+      reader.fail(str_cat("map row ", y, " has ", text.size(), " characters, expected ", width));
     }
     for (int x = 0; x < width; ++x) {
       switch (text[x]) {
@@ -135,12 +133,12 @@ Grid parse_map(std::istream& in, const std::string& name) {
           grid.set_blocked(x, y, true);
           break;
         default:
-          reader.fail(cat("unknown map character ", describe(text[x]), " at column ", x + 1));
+          reader.fail(str_cat("unknown map character ", describe(text[x]), " at column ", x + 1));
       }
     }
   }
   while (reader.next(text)) {
-    if (!blank(text)) reader.fail(cat("unexpected content after the ", height, " map rows"));
+    if (!blank(text)) reader.fail(str_cat("unexpected content after the ", height, " map rows"));
   }
   return grid;
 }
@@ -161,10 +159,10 @@ void write_map(const Grid& grid, std::ostream& out) {
 
 void write_map_file(const Grid& grid, const std::string& path) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw InputError(cat(path, ": cannot open for writing"));
+  if (!out) throw InputError(str_cat(path, ": cannot open for writing"));
   write_map(grid, out);
   out.flush();
-  if (!out) throw InputError(cat(path, ": write failed"));
+  if (!out) throw InputError(str_cat(path, ": write failed"));
 }
 
 std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name) {
@@ -177,7 +175,7 @@ std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name)
     const auto t = tokens(text);
     if (!have_version) {
       if (t.size() != 2 || t[0] != "version" || (t[1] != "1" && t[1] != "1.0")) {
-        reader.fail(cat("expected 'version 1', found '", text, "'"));
+        reader.fail(str_cat("expected 'version 1', found '", text, "'"));
       }
       have_version = true;
       continue;
@@ -186,9 +184,9 @@ std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name)
     // everything between the bucket and the last seven fields, so a path with spaces survives.
     if (t.size() < 9) {
       reader.fail(
-          cat("expected 9 fields (bucket, map, map width, map height, start x, start y,"
-              " goal x, goal y, optimal length), found ",
-              t.size()));
+          str_cat("expected 9 fields (bucket, map, map width, map height, start x, start y,"
+                  " goal x, goal y, optimal length), found ",
+                  t.size()));
     }
     const std::size_t n = t.size();
     ScenarioQuery q;
@@ -203,24 +201,24 @@ std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name)
     long long v[7] = {};
     for (int i = 0; i < 7; ++i) {
       if (!parse_int(int_fields[i], v[i])) {
-        reader.fail(cat(kIntNames[i], " '", int_fields[i], "' is not a whole number"));
+        reader.fail(str_cat(kIntNames[i], " '", int_fields[i], "' is not a whole number"));
       }
     }
-    if (v[0] < 0 || v[0] > 1'000'000'000) reader.fail(cat("bucket ", v[0], " is out of range"));
+    if (v[0] < 0 || v[0] > 1'000'000'000) reader.fail(str_cat("bucket ", v[0], " is out of range"));
     for (int i = 1; i <= 2; ++i) {
       if (v[i] < 1 || v[i] > kMaxMapSide) {
-        reader.fail(cat(kIntNames[i], " ", v[i], " is outside [1, ", kMaxMapSide, "]"));
+        reader.fail(str_cat(kIntNames[i], " ", v[i], " is outside [1, ", kMaxMapSide, "]"));
       }
     }
     for (int i = 3; i <= 6; ++i) {
       const long long limit = (i % 2 == 1) ? v[1] : v[2];  // x against width, y against height
       if (v[i] < 0 || v[i] >= limit) {
         reader.fail(
-            cat(kIntNames[i], " ", v[i], " is outside the declared ", v[1], "x", v[2], " map"));
+            str_cat(kIntNames[i], " ", v[i], " is outside the declared ", v[1], "x", v[2], " map"));
       }
     }
     if (!parse_double(t[n - 1], q.optimal_length) || q.optimal_length < 0.0) {
-      reader.fail(cat("optimal length '", t[n - 1], "' is not a non-negative number"));
+      reader.fail(str_cat("optimal length '", t[n - 1], "' is not a non-negative number"));
     }
     q.bucket = static_cast<int>(v[0]);
     q.map_width = static_cast<int>(v[1]);
@@ -241,19 +239,19 @@ std::vector<ScenarioQuery> read_scen(const std::string& path) {
 void check_scenario_fits(const Grid& grid, const ScenarioQuery& query,
                          const std::string& scen_name) {
   auto fail = [&](const std::string& what) {
-    throw InputError(cat(scen_name, ":", query.line, ": ", what));
+    throw InputError(str_cat(scen_name, ":", query.line, ": ", what));
   };
   if (query.map_width != grid.width() || query.map_height != grid.height()) {
-    fail(cat("declares a ", query.map_width, "x", query.map_height, " map but the map is ",
-             grid.width(), "x", grid.height()));
+    fail(str_cat("declares a ", query.map_width, "x", query.map_height, " map but the map is ",
+                 grid.width(), "x", grid.height()));
   }
   const std::pair<const char*, Cell> ends[] = {{"start", query.start}, {"goal", query.goal}};
   for (const auto& [what, c] : ends) {
     if (!grid.in_bounds(c)) {
-      fail(cat(what, " (", c.x, ", ", c.y, ") is outside the ", grid.width(), "x", grid.height(),
-               " map"));
+      fail(str_cat(what, " (", c.x, ", ", c.y, ") is outside the ", grid.width(), "x",
+                   grid.height(), " map"));
     }
-    if (grid.blocked(c)) fail(cat(what, " (", c.x, ", ", c.y, ") is on an obstacle"));
+    if (grid.blocked(c)) fail(str_cat(what, " (", c.x, ", ", c.y, ") is on an obstacle"));
   }
 }
 

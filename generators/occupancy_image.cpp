@@ -10,17 +10,11 @@
 #include <memory>
 #include <sstream>
 
+#include "core/str_cat.h"
 #include "core/text_file.h"
 
 namespace agv {
 namespace {
-
-template <class... Parts>
-std::string cat(const Parts&... parts) {
-  std::ostringstream out;
-  (out << ... << parts);
-  return out.str();
-}
 
 std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -31,8 +25,8 @@ std::string lower_extension(const std::string& path) {
 void check_size(const std::string& name, long width, long height, int line) {
   // The one map size limit (core/grid.h), as for generated maps and MovingAI files.
   if (width < 1 || height < 1 || width > kMaxMapSide || height > kMaxMapSide)
-    throw InputError(cat(name, ":", line, ": image size ", width, "x", height, " is outside 1..",
-                         kMaxMapSide, " per side"));
+    throw InputError(str_cat(name, ":", line, ": image size ", width, "x", height,
+                             " is outside 1..", kMaxMapSide, " per side"));
 }
 
 // The PGM header's tokens (magic, width, height, maxval), '#' comments skipped, with the line
@@ -47,8 +41,8 @@ class PgmHeader {
     const std::size_t start = pos_;
     while (pos_ < data_.size() && std::isdigit(static_cast<unsigned char>(data_[pos_]))) ++pos_;
     if (pos_ == start || pos_ - start > 9)
-      fail(cat("expected the ", what, " (a decimal number), found ",
-               pos_ < data_.size() ? cat("'", data_[start], "'") : std::string("the end")));
+      fail(str_cat("expected the ", what, " (a decimal number), found ",
+                   pos_ < data_.size() ? str_cat("'", data_[start], "'") : std::string("the end")));
     return std::stol(data_.substr(start, pos_ - start));
   }
   void skip_space_and_comments() {
@@ -65,11 +59,11 @@ class PgmHeader {
     }
   }
   [[noreturn]] void fail(const std::string& what) const {
-    throw InputError(cat(name_, ":", line_, ": ", what));
+    throw InputError(str_cat(name_, ":", line_, ": ", what));
   }
   // At the end of the file: the line of the last token read, not the empty one after it.
   [[noreturn]] void fail_at_last_token(const std::string& what) const {
-    throw InputError(cat(name_, ":", token_line_, ": ", what));
+    throw InputError(str_cat(name_, ":", token_line_, ": ", what));
   }
   std::size_t& pos() { return pos_; }
   int& line() { return line_; }
@@ -98,7 +92,8 @@ ImagePixels read_pgm(const std::string& path) {
   const long height = h.number("height");
   check_size(path, width, height, h.line());
   const long maxval = h.number("maximum value");
-  if (maxval < 1 || maxval > 65535) h.fail(cat("maximum value ", maxval, " is outside 1..65535"));
+  if (maxval < 1 || maxval > 65535)
+    h.fail(str_cat("maximum value ", maxval, " is outside 1..65535"));
   ImagePixels out;
   out.width = static_cast<int>(width);
   out.height = static_cast<int>(height);
@@ -115,14 +110,14 @@ ImagePixels read_pgm(const std::string& path) {
     const std::size_t start = h.pos() + 1;
     const std::size_t bytes = maxval < 256 ? 1 : 2;
     if (data.size() - start < n * bytes)
-      h.fail(cat("the samples end after ", (data.size() - start) / bytes, " of ", width, "x",
-                 height, " = ", n, " pixels"));
+      h.fail(str_cat("the samples end after ", (data.size() - start) / bytes, " of ", width, "x",
+                     height, " = ", n, " pixels"));
     for (std::size_t i = 0; i < n; ++i) {
       long v = static_cast<unsigned char>(data[start + i * bytes]);
       if (bytes == 2) v = v * 256 + static_cast<unsigned char>(data[start + i * bytes + 1]);
       if (v > maxval)
-        throw InputError(cat(path, ": pixel ", i % width, ",", i / width, " is ", v,
-                             ", above the maximum value ", maxval));
+        throw InputError(str_cat(path, ": pixel ", i % width, ",", i / width, " is ", v,
+                                 ", above the maximum value ", maxval));
       out.grey[i] = to_8bit(v);
     }
   } else {
@@ -130,9 +125,9 @@ ImagePixels read_pgm(const std::string& path) {
       h.skip_space_and_comments();
       if (h.pos() >= data.size())
         h.fail_at_last_token(
-            cat("the samples end after ", i, " of ", width, "x", height, " = ", n, " pixels"));
+            str_cat("the samples end after ", i, " of ", width, "x", height, " = ", n, " pixels"));
       const long v = h.number("pixel value");
-      if (v > maxval) h.fail(cat("pixel value ", v, " is above the maximum value ", maxval));
+      if (v > maxval) h.fail(str_cat("pixel value ", v, " is above the maximum value ", maxval));
       out.grey[i] = to_8bit(v);
     }
     h.skip_space_and_comments();
@@ -148,7 +143,7 @@ ImagePixels read_png(const std::string& path) {
   const auto failed = [&](const char* stage) {
     const std::string why = image.message;
     png_image_free(&image);
-    return InputError(cat(path, ": not a readable PNG image (", stage, ": ", why, ")"));
+    return InputError(str_cat(path, ": not a readable PNG image (", stage, ": ", why, ")"));
   };
   if (png_image_begin_read_from_file(&image, path.c_str()) == 0) throw failed("header");
   try {
@@ -210,9 +205,9 @@ OccupancyImage read_yaml(const std::string& path) {
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw InputError(cat(path, ":", e.mark.line + 1, ": malformed YAML (", e.msg, ")"));
+    throw InputError(str_cat(path, ":", e.mark.line + 1, ": malformed YAML (", e.msg, ")"));
   }
-  if (!root.IsMap()) throw InputError(cat(path, ":1: expected a map_server map description"));
+  if (!root.IsMap()) throw InputError(str_cat(path, ":1: expected a map_server map description"));
   OccupancyThresholds t;
   std::string image;
   double resolution = 0.0;
@@ -227,7 +222,7 @@ OccupancyImage read_yaml(const std::string& path) {
         const double x = v.as<double>();
         if (!std::isfinite(x) || x < lo || x > hi)
           throw InputError(
-              cat(path, ":", line, ": ", key, ": ", x, " is outside [", lo, ", ", hi, "]"));
+              str_cat(path, ":", line, ": ", key, ": ", x, " is outside [", lo, ", ", hi, "]"));
         return x;
       };
       if (key == "image") {
@@ -235,11 +230,11 @@ OccupancyImage read_yaml(const std::string& path) {
       } else if (key == "resolution") {
         resolution = number(1e-9, 1e9);
         if (resolution <= 0.0)
-          throw InputError(cat(path, ":", line, ": resolution: must be positive"));
+          throw InputError(str_cat(path, ":", line, ": resolution: must be positive"));
         have_resolution = true;
       } else if (key == "origin") {
         if (!v.IsSequence() || v.size() != 3)
-          throw InputError(cat(path, ":", line, ": origin: expected [x, y, yaw]"));
+          throw InputError(str_cat(path, ":", line, ": origin: expected [x, y, yaw]"));
         for (const auto& c : v) (void)c.as<double>();
       } else if (key == "negate") {
         const std::string s = v.as<std::string>();
@@ -248,7 +243,7 @@ OccupancyImage read_yaml(const std::string& path) {
         } else if (s == "1" || s == "true") {
           t.negate = true;
         } else {
-          throw InputError(cat(path, ":", line, ": negate: expected 0 or 1, got \"", s, "\""));
+          throw InputError(str_cat(path, ":", line, ": negate: expected 0 or 1, got \"", s, "\""));
         }
       } else if (key == "occupied_thresh") {
         t.occupied = number(0.0, 1.0);
@@ -261,23 +256,24 @@ OccupancyImage read_yaml(const std::string& path) {
         } else if (mode == "scale") {
           t.scale = true;
         } else {
-          throw InputError(cat(path, ":", line, ": mode: \"", mode,
-                               "\" is not one of: trinary, scale (raw values are not occupancy "
-                               "a grid planner can read)"));
+          throw InputError(str_cat(path, ":", line, ": mode: \"", mode,
+                                   "\" is not one of: trinary, scale (raw values are not occupancy "
+                                   "a grid planner can read)"));
         }
       } else {
-        throw InputError(cat(path, ":", line, ": unknown key \"", key,
-                             "\" (known: image, resolution, origin, negate, occupied_thresh, "
-                             "free_thresh, mode)"));
+        throw InputError(str_cat(path, ":", line, ": unknown key \"", key,
+                                 "\" (known: image, resolution, origin, negate, occupied_thresh, "
+                                 "free_thresh, mode)"));
       }
     } catch (const YAML::Exception& e) {
-      throw InputError(cat(path, ":", line, ": ", key.empty() ? "key" : key, ": ", e.msg));
+      throw InputError(str_cat(path, ":", line, ": ", key.empty() ? "key" : key, ": ", e.msg));
     }
   }
-  if (image.empty()) throw InputError(cat(path, ":1: image: missing"));
-  if (!have_resolution) throw InputError(cat(path, ":1: resolution: missing"));
+  if (image.empty()) throw InputError(str_cat(path, ":1: image: missing"));
+  if (!have_resolution) throw InputError(str_cat(path, ":1: resolution: missing"));
   if (t.free > t.occupied)
-    throw InputError(cat(path, ": free_thresh ", t.free, " is above occupied_thresh ", t.occupied));
+    throw InputError(
+        str_cat(path, ": free_thresh ", t.free, " is above occupied_thresh ", t.occupied));
   // A relative image path is relative to the .yaml's folder, as map_server reads it.
   std::filesystem::path image_path(image);
   if (image_path.is_relative()) image_path = std::filesystem::path(path).parent_path() / image_path;

@@ -11,13 +11,11 @@
 #include <limits>
 
 #include "core/line_of_sight.h"
+#include "core/numbers.h"
 
 namespace agv {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Squared exact distance from (x, y) to the nearest obstacle square of the 3x3 block around its
 // cell, capped at 1: no square outside that block is closer than 1 to any point of the cell.

@@ -8,13 +8,12 @@
 #include "core/connectivity.h"
 #include "core/corner_rule.h"
 #include "core/distance_transform.h"
+#include "core/numbers.h"
 
 namespace agv {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kContactTolerance = 1e-9;  // cells, in the robot's favour
 constexpr double kYieldGap = 1e-6;          // cells a yielding disc keeps from the robot
 

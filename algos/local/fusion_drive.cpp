@@ -12,12 +12,12 @@
 #include "algos/local/unicycle.h"
 #include "core/cell_geometry.h"
 #include "core/distance_transform.h"
+#include "core/numbers.h"
 
 namespace agv {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kDeadlineCheckSteps = 32;
 constexpr std::int64_t kRolloutPointsPerPoll = 4096;
 constexpr double kStandStill = 1e-3;  // cells per control step

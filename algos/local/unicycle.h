@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "core/grid.h"
+#include "core/numbers.h"
 
 namespace agv {
 
@@ -41,7 +42,6 @@ inline Point position(const Pose& p) { return {p.x, p.y}; }
 
 // Wraps an angle to (-pi, pi].
 inline double wrap_angle(double a) {
-  constexpr double kPi = 3.14159265358979323846;
   a = std::remainder(a, 2.0 * kPi);
   if (a <= -kPi) a += 2.0 * kPi;
   return a;

@@ -47,12 +47,12 @@
 #include "core/cell_geometry.h"
 #include "core/line_of_sight.h"
 #include "core/line_of_sight_batch.h"
+#include "core/numbers.h"
 
 namespace agv {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // A window's gbest replaces P(n+1) only when it shortens the local path by more than rounding.
 constexpr double kMinGain = 1e-9;
 

@@ -39,6 +39,7 @@
 #include "engine/run_executor.h"
 #include "engine/trajectory_judge.h"
 #include "generators/map_generators.h"
+#include "tests/test_size.h"
 
 namespace agv {
 namespace {
@@ -256,7 +257,8 @@ TEST(Fusion, JudgedStaticClearanceIsTheExactMinimumOverTheTrajectory) {
   const ConfiguredPlanner c = configure_planner(
       "fusion_astar_dwa", {{"unknown_obstacles", 2}, {"dynamic_obstacles", 0}}, "t");
   int checked = 0;
-  for (int m = 0; m < 12; ++m) {
+  const int maps = test::sized(12, 4);
+  for (int m = 0; m < maps; ++m) {
     const MapInstance map = random_map(0.2, m);
     Scratch scratch;
     Rng rng(5, m);
@@ -278,7 +280,7 @@ TEST(Fusion, JudgedStaticClearanceIsTheExactMinimumOverTheTrajectory) {
     EXPECT_DOUBLE_EQ(judged, exact * tr.cell_edge) << "map " << m;
     ++checked;
   }
-  EXPECT_EQ(checked, 12);
+  EXPECT_EQ(checked, maps);
 }
 
 std::size_t metric_index(std::string_view name) {
@@ -376,7 +378,7 @@ TEST(Fusion, LocalGoalsAreTheKeyNodesOrTheCurveSamples) {
 
 TEST(Fusion, SameSeedSameTrajectory) {
   const ConfiguredPlanner c = configure_planner("fusion_kin_dwa", nlohmann::json::object(), "t");
-  for (int m = 0; m < 4; ++m) {
+  for (int m = 0; m < test::sized(4, 2); ++m) {
     const MapInstance map = random_map(0.2, m);
     Scratch s1, s2;
     Rng r1(3, m), r2(3, m);

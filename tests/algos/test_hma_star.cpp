@@ -20,6 +20,7 @@
 #include "engine/statistics.h"
 #include "engine/validator.h"
 #include "generators/map_generators.h"
+#include "tests/test_size.h"
 
 namespace agv {
 namespace {
@@ -180,7 +181,8 @@ TEST(HmaStar, EveryInertiaModeAndWithoutOpposition) {
   for (const nlohmann::json& params : variants) {
     const ConfiguredPlanner hma = make("hma_star", params);
     int improved = 0;
-    for (std::size_t i = 0; i < 150; ++i) {
+    const auto maps_drawn = static_cast<std::size_t>(test::sized(150, 40));
+    for (std::size_t i = 0; i < maps_drawn; ++i) {
       const MapInstance& m = maps()[i * 19 % maps().size()];
       const PlanResult h = run(hma, m, scratch);
       const PlanResult a = run(ma, m, scratch);

@@ -13,17 +13,12 @@
 #include "core/distance_transform.h"
 #include "core/grid.h"
 #include "core/rng.h"
+#include "tests/core/random_grid.h"
 
 namespace agv {
 namespace {
 
-Grid random_grid(int w, int h, double p, Rng& rng) {
-  Grid g(w, h);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) g.set_blocked(x, y, rng.chance(p));
-  }
-  return g;
-}
+using test::random_grid;
 
 // Every obstacle cell of the padded grid (border included).
 std::vector<Cell> obstacles(const Grid& g) {

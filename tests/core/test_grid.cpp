@@ -11,17 +11,12 @@
 #include "core/grid.h"
 #include "core/rng.h"
 #include "core/summed_area.h"
+#include "tests/core/random_grid.h"
 
 namespace agv {
 namespace {
 
-Grid random_grid(int w, int h, double p, Rng& rng) {
-  Grid g(w, h);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) g.set_blocked(x, y, rng.chance(p));
-  }
-  return g;
-}
+using test::random_grid;
 
 bool bit_at(const Grid& g, int x, int y) {
   const int bit = x + 1;

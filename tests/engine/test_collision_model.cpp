@@ -15,6 +15,7 @@
 #include "engine/validator.h"
 #include "tests/engine/config_error.h"
 #include "tests/engine/for_each_run.h"
+#include "tests/test_size.h"
 
 namespace agv {
 namespace {
@@ -133,7 +134,9 @@ TEST(CollisionModel, EveryPathIsJudgedUnderTheModel) {
         "rrt",
         "birrt",
         {{"name", "astar"}, {"label", "astar_allow"}, {"params", {{"corner_rule", "allow"}}}}};
-    const SweepConfig config = parse_config(small_sweep({{"clearance", clearance}}, planners));
+    json sweep = small_sweep({{"clearance", clearance}}, planners);
+    sweep["maps_per_cell"] = test::sized(8, 3);
+    const SweepConfig config = parse_config(sweep);
     const CollisionModel& model = config.collision;
     int successes = 0, variant_invalid = 0, variant_runs = 0;
     for_each_run(config, [&](const MapTaskRun& run) {

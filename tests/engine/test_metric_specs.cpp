@@ -17,6 +17,7 @@
 #include "engine/sweep_config.h"
 #include "engine/sweep_runner.h"
 #include "generators/map_generators.h"
+#include "tests/test_size.h"
 
 namespace agv {
 namespace {
@@ -38,7 +39,7 @@ TEST(MetricSpecs, EveryExtraARegisteredPlannerReportsIsDeclared) {
   std::set<std::string> undeclared;
   for (const PlannerInfo& info : planner_registry()) {
     const ConfiguredPlanner c = configure_planner(info.name, json::object(), "test");
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < test::sized(4, 2); ++i) {
       MapSpec spec;
       spec.generator = i % 2 ? "blocks" : "uniform";
       spec.width = 20;

@@ -14,6 +14,7 @@
 #include "engine/sweep_runner.h"
 #include "generators/registry.h"
 #include "tests/engine/config_error.h"
+#include "tests/test_size.h"
 
 namespace agv {
 namespace {
@@ -25,9 +26,9 @@ constexpr int kReducedMaps = 6;
 constexpr int kReducedScopedMaps = 2;
 
 // The default config at reduced size: every generator and planner (or the first `keep` of
-// them and its first scoped one), fewer and smaller maps; the scoped planners (fusion) keep
-// their scope's shape: the smaller size, the first maps.
-SweepConfig reduced_default(std::size_t keep = 1000) {
+// them and, with `keep_scoped`, its first scoped one), fewer and smaller maps; the scoped
+// planners (fusion) keep their scope's shape: the smaller size, the first maps.
+SweepConfig reduced_default(std::size_t keep = 1000, bool keep_scoped = true) {
   std::ifstream in(std::string(AGV_SOURCE_DIR) + "/configs/default.json");
   json j = json::parse(in);
   j["sizes"] = json::array({24, 40});
@@ -37,7 +38,7 @@ SweepConfig reduced_default(std::size_t keep = 1000) {
   for (auto p : j["planners"]) {
     const bool scoped = p.is_object() && p.contains("only");
     if (scoped) p["only"] = {{"sizes", {24}}, {"maps_per_cell", kReducedScopedMaps}};
-    if (planners.size() < keep || (scoped && !scoped_kept)) planners.push_back(p);
+    if (planners.size() < keep || (keep_scoped && scoped && !scoped_kept)) planners.push_back(p);
     scoped_kept = scoped_kept || scoped;
   }
   j["planners"] = planners;
@@ -82,7 +83,7 @@ TEST(Sweep, ReportIsIdenticalOnOneAndTwoThreads) {
 }
 
 TEST(Sweep, RecordsOnePerRunWithReplayFields) {
-  const SweepConfig config = reduced_default(3);
+  const SweepConfig config = reduced_default(static_cast<std::size_t>(test::sized(3, 1)));
   const fs::path runs =
       fs::temp_directory_path() / ("agv_test_runs_" + std::to_string(::getpid()) + ".jsonl");
   deterministic_text(config, 2, runs.string());
@@ -99,10 +100,12 @@ TEST(Sweep, RecordsOnePerRunWithReplayFields) {
     ++n;
   }
   const auto expected = static_cast<std::size_t>(scheduled_runs(config, plan_sweep(config)));
-  // Three planners on every map, the scoped one on the 24x24 cells' first maps (half the cells).
+  // The kept planners on every map, the scoped one on the 24x24 cells' first maps (half the
+  // cells).
   const SweepPlan plan = plan_sweep(config);
-  ASSERT_EQ(config.planners.size(), 4U);
-  EXPECT_EQ(expected, static_cast<std::size_t>(3 * plan.map_tasks()) +
+  const auto everywhere = static_cast<std::int64_t>(test::sized(3, 1));
+  ASSERT_EQ(config.planners.size(), static_cast<std::size_t>(everywhere + 1));
+  EXPECT_EQ(expected, static_cast<std::size_t>(everywhere * plan.map_tasks()) +
                           plan.cells.size() / 2 * kReducedScopedMaps);
   EXPECT_EQ(n, expected);
   EXPECT_EQ(ids.size(), expected) << "task ids must be unique";
@@ -120,7 +123,7 @@ TEST(Config, ConfigAsRunReadsBackToTheSameConfig) {
 }
 
 TEST(Sweep, DifferentSeedsGiveDifferentMaps) {
-  SweepConfig a = reduced_default(1);
+  SweepConfig a = reduced_default(1, false);  // the maps differ: one planner shows it
   SweepConfig b = a;
   b.seed = a.seed + 1;
   const json ra = deterministic_part(build_report(a, run_sweep(a, {})));

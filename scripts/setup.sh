@@ -2,22 +2,39 @@
 # Installs the Debian packages agvbench needs (only the missing ones), then configures and builds
 # it in ./build. Works on a bare Debian 12 as root (or with sudo).
 # Usage: scripts/setup.sh [TARGET...]   (default: everything; scripts/sweep.sh builds agvbench only)
+# Env:   AGVBENCH_APT_ALSO="PACKAGE..." more packages to install while the build runs (.ci/run
+#        names its later stages' packages there, so that their download overlaps the compile).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake ninja-build pkg-config git
+# What the build needs, installed first.
+build_packages=(g++ cmake ninja-build pkg-config git python3
   libeigen3-dev libtbb-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev
-  libcli11-dev libpcg-cpp-dev libboost-dev libnanoflann-dev python3 python3-matplotlib
-  python3-plotly chromium
-  libsqlite3-dev sqlite3 libssl-dev
-  libompl-dev
-  libyaml-cpp-dev libpng-dev)
-scripts/apt_need.sh "${packages[@]}"
+  libcli11-dev libpcg-cpp-dev libboost-dev libnanoflann-dev
+  libsqlite3-dev libssl-dev libompl-dev libyaml-cpp-dev libpng-dev)
+# What only the tests and report scripts run (plots, the HTML report in Chromium, sqlite3):
+# installed while the build compiles, which has no use for them.
+run_packages=(python3-matplotlib python3-plotly chromium sqlite3)
+scripts/apt_need.sh "${build_packages[@]}"
+
+apt_log=$(mktemp)
+trap 'rm -f "$apt_log"' EXIT
+# shellcheck disable=SC2086  # AGVBENCH_APT_ALSO is a list of package names
+scripts/apt_need.sh "${run_packages[@]}" ${AGVBENCH_APT_ALSO:-} >"$apt_log" 2>&1 &
+apt_pid=$!
 
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-if (($#)); then
-  cmake --build build -j "$jobs" --target "$@"
-else
-  cmake --build build -j "$jobs"
+build_rc=0
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null || build_rc=$?
+if ((build_rc == 0)); then
+  if (($#)); then
+    cmake --build build -j "$jobs" --target "$@" || build_rc=$?
+  else
+    cmake --build build -j "$jobs" || build_rc=$?
+  fi
 fi
+apt_rc=0
+wait "$apt_pid" || apt_rc=$?
+cat "$apt_log" >&2
+((apt_rc == 0)) || { echo "setup: installing ${run_packages[*]} ${AGVBENCH_APT_ALSO:-} failed" >&2; exit "$apt_rc"; }
+exit "$build_rc"

@@ -33,6 +33,7 @@
 #include "algos/registry.h"
 #include "engine/run_executor.h"
 #include "generators/map_generators.h"
+#include "tests/test_size.h"
 
 namespace agv {
 namespace {
@@ -65,7 +66,8 @@ MapInstance contract_map(int i) {
 const std::vector<MapInstance>& small_maps() {
   static const std::vector<MapInstance> maps = [] {
     std::vector<MapInstance> v;
-    for (int i = 0; i < 12; ++i) v.push_back(contract_map(i));
+    // Six in a sanitized tree: still every generator, side and endpoint mode.
+    for (int i = 0; i < test::sized(12, 6); ++i) v.push_back(contract_map(i));
     return v;
   }();
   return maps;
@@ -492,7 +494,7 @@ TEST_P(PlannerContract, SameSeedSameResult) {
 const std::vector<MapInstance>& count_maps() {
   static const std::vector<MapInstance> maps = [] {
     std::vector<MapInstance> v;
-    for (int i = 0; i < 48; ++i) v.push_back(contract_map(100 + i));
+    for (int i = 0; i < test::sized(48, 16); ++i) v.push_back(contract_map(100 + i));
     return v;
   }();
   return maps;

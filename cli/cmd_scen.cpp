@@ -12,8 +12,10 @@
 #include "cli/cli_params.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
+#include "engine/exit_guard.h"
 #include "engine/json_text.h"
 #include "engine/metrics.h"
+#include "engine/validator.h"
 #include "generators/movingai.h"
 
 namespace agv {
@@ -71,14 +73,24 @@ struct ScenTally {
   nlohmann::json bad = nlohmann::json::array();  // the first 20 mismatches
 };
 
-void score(const ScenCommand& cmd, std::size_t i, const ScenarioQuery& q, const PlanResult& r,
-           ScenTally& t) {
+// A path is scored only once the validator accepts it under MovingAI's rule (no corner cut): a
+// path with a NaN or off-grid point, a jump or a cut corner is a failure, never a length.
+void score(const ScenCommand& cmd, const Grid& grid, std::size_t i, const ScenarioQuery& q,
+           const PlanResult& r, ScenTally& t) {
   t.expansions += r.work.search_expansions.value_or(0);
   t.checks += r.work.collision_checks.value_or(0);
   if (!r.ok()) {
     ++t.failures;
     ++t.mismatches;
     if (t.bad.size() < 20) t.bad.push_back({{"query", i + 1}, {"failure", to_string(r.failure)}});
+    return;
+  }
+  const ValidationResult v =
+      validate_path(grid, q.start, q.goal, r.path, CornerRule::no_corner_cut);
+  if (!v.ok) {
+    ++t.failures;
+    ++t.mismatches;
+    if (t.bad.size() < 20) t.bad.push_back({{"query", i + 1}, {"invalid_path", v.reason}});
     return;
   }
   const double len = polyline_length(r.path);
@@ -98,13 +110,15 @@ ScenTally run_queries(const ScenCommand& cmd, const Grid& grid, const Planner& p
   Scratch scratch;
   Rng rng(1, stable_hash(cmd.planner));
   ScenTally t;
+  const std::string who = "planner \"" + cmd.planner + "\", in the middle of a scenario query,";
+  const ForeignCodeScope foreign(who.c_str());
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const auto& q = queries[i];
     const PlanRequest req{grid, q.start, q.goal, rng, scratch, Deadline::never()};
     const std::int64_t t0 = thread_cpu_ns();
     const PlanResult r = plan_checked(planner, req);
     t.times_ns.push_back(static_cast<double>(thread_cpu_ns() - t0));
-    score(cmd, i, q, r, t);
+    score(cmd, grid, i, q, r, t);
   }
   return t;
 }

@@ -129,6 +129,65 @@ json check_value(const ParamSpec& s, const json& v, const std::string& field) {
 
 }  // namespace
 
+namespace {
+
+bool valid_param_name(const std::string& name) {
+  if (name.empty()) return false;
+  for (const char c : name)
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_')) return false;
+  return true;
+}
+
+void check_bounds(const ParamSpec& s, const std::string& field) {
+  if (std::isnan(s.min) || std::isnan(s.max)) throw InputError(field + ": a bound is NaN");
+  if (s.min > s.max) throw InputError(field + ": its range " + range_text(s) + " is empty");
+  if (s.type == ParamType::integer && (std::floor(s.min) != s.min || std::floor(s.max) != s.max))
+    throw InputError(field + ": an integer's bounds " + range_text(s) + " are not whole numbers");
+}
+
+void check_choices(const ParamSpec& s, const std::string& field) {
+  if (s.choices.empty()) throw InputError(field + ": a choice without choices");
+  for (std::size_t i = 0; i < s.choices.size(); ++i) {
+    if (s.choices[i].empty()) throw InputError(field + ": an empty choice");
+    for (std::size_t j = 0; j < i; ++j)
+      if (s.choices[j] == s.choices[i])
+        throw InputError(field + ": choice \"" + s.choices[i] + "\" listed twice");
+  }
+}
+
+}  // namespace
+
+void check_param_specs(const std::vector<ParamSpec>& specs, const std::string& who) {
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const ParamSpec& s = specs[i];
+    const std::string field = who + ": parameter \"" + s.name + "\"";
+    if (!valid_param_name(s.name))
+      throw InputError(field + ": a name must be a word of a-z, 0-9 and '_'");
+    for (std::size_t j = 0; j < i; ++j)
+      if (specs[j].name == s.name) throw InputError(field + ": declared twice");
+    switch (s.type) {
+      case ParamType::number:
+      case ParamType::integer:
+        check_bounds(s, field);
+        break;
+      case ParamType::choice:
+        check_choices(s, field);
+        break;
+      case ParamType::boolean:
+        break;
+      default:
+        throw InputError(field + ": unknown type " + std::to_string(static_cast<int>(s.type)));
+    }
+    if (s.type != ParamType::choice && !s.choices.empty())
+      throw InputError(field + ": choices given for a parameter that is not a choice");
+    try {
+      check_value(s, s.default_value, field + " default");
+    } catch (const InputError& e) {
+      throw InputError(std::string(e.what()) + " (its own declaration refuses it)");
+    }
+  }
+}
+
 Params Params::resolve(const std::vector<ParamSpec>& specs, const json& given,
                        const std::string& where) {
   if (!given.is_null() && !given.is_object())

@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "engine/config_loader.h"
+#include "engine/json_text.h"
 #include "engine/map_task.h"
 
 extern char** environ;
@@ -184,7 +185,9 @@ WorkerProcess::ReadStatus WorkerProcess::read_line(Clock::time_point deadline, s
 
 void WorkerProcess::stop() {
   if (pid_ > 0) {
-    ::kill(pid_, SIGKILL);
+    // The worker's whole process group (it leads one: spawn()), so that a process a planner
+    // started dies with it.
+    ::kill(-pid_, SIGKILL);
     int status = 0;
     while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
@@ -200,6 +203,7 @@ std::string WorkerProcess::describe_exit(bool& interrupted) {
   pid_t r;
   while ((r = ::waitpid(pid_, &status, 0)) < 0 && errno == EINTR) {
   }
+  ::kill(-pid_, SIGKILL);  // what its planner started, if anything is left of its group
   pid_ = -1;
   interrupted = false;
   if (r > 0 && WIFSIGNALED(status)) {
@@ -267,6 +271,73 @@ WorkerProcess::Reply WorkerProcess::next_run(double hard_limit_s) {
   return reply;
 }
 
+namespace {
+
+// The worker's end of the protocol, on descriptors of its own: fd 0 and 1 are given to the
+// planners as /dev/null and the worker's stderr, so that whatever a planner reads or prints
+// (a debug line on stdout, bytes that are not text) never reaches the channel.
+class Channel {
+ public:
+  Channel() {
+    in_ = ::fcntl(STDIN_FILENO, F_DUPFD_CLOEXEC, 3);
+    out_ = ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 3);
+    if (in_ < 0 || out_ < 0) throw std::runtime_error("worker: cannot set up its channel");
+    std::cout.flush();
+    const int null = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+    if (null < 0 || ::dup2(null, STDIN_FILENO) < 0 || ::dup2(STDERR_FILENO, STDOUT_FILENO) < 0)
+      throw std::runtime_error("worker: cannot redirect the planners' stdin and stdout");
+    ::close(null);
+  }
+
+  // The next line without its newline; false at the end of the input.
+  bool read_line(std::string& line) {
+    for (;;) {
+      const std::size_t end = buffer_.find('\n');
+      if (end != std::string::npos) {
+        line.assign(buffer_, 0, end);
+        buffer_.erase(0, end + 1);
+        return true;
+      }
+      char chunk[65536];
+      const ssize_t n = ::read(in_, chunk, sizeof chunk);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) return false;
+      buffer_.append(chunk, static_cast<std::size_t>(n));
+    }
+  }
+
+  // One record a line; bytes that are not UTF-8 (in a planner's message, say) as U+FFFD.
+  void send(const nlohmann::json& record) { write_all(out_, json_text(record) + "\n"); }
+
+ private:
+  int in_ = -1;
+  int out_ = -1;
+  std::string buffer_;
+};
+
+// The task loop: each request's runs sent back as they finish; 2 on a malformed request.
+int serve_tasks(Channel& channel, const SweepConfig& config, MapTaskWorkspace& workspace) {
+  const SweepPlan plan = plan_sweep(config);
+  const std::string hash = config_hash(config);
+  const MapTaskContext context(config, plan, hash);
+  std::int64_t number = 0;
+  std::string line;
+  while (channel.read_line(line)) {
+    ++number;
+    TaskRequest request;
+    if (const std::string why = read_task_request(line, context, request); !why.empty()) {
+      // A malformed request is a bug of whoever sent it: refused by name, never run.
+      std::cerr << "agvbench worker: request " << number << ": " << why << "\n";
+      return 2;
+    }
+    run_map_task(context, request.task, request.planners, workspace,
+                 [&channel](const MapTaskRun& run) { channel.send(run.record()); });
+  }
+  return 0;
+}
+
+}  // namespace
+
 int worker_main(std::int64_t memory_mb) {
   if (memory_mb > 0) {
     const rlim_t bytes = static_cast<rlim_t>(memory_mb) * 1024 * 1024;
@@ -276,8 +347,9 @@ int worker_main(std::int64_t memory_mb) {
       return 1;
     }
   }
+  Channel channel;
   std::string line;
-  if (!std::getline(std::cin, line)) {
+  if (!channel.read_line(line)) {
     std::cerr << "agvbench worker: no config line on stdin\n";
     return 2;
   }
@@ -289,27 +361,16 @@ int worker_main(std::int64_t memory_mb) {
     config = parse_config(first.at("config"), first.value("base_dir", std::string(".")));
     workspace.planners = configure_planners(config);
   } catch (const std::exception& e) {
-    std::cout << nlohmann::json{{"fatal", e.what()}}.dump() << "\n" << std::flush;
+    channel.send({{"fatal", e.what()}});
     return 2;
   }
-  std::cout << nlohmann::json{{"ready", true}}.dump() << "\n" << std::flush;
-  const SweepPlan plan = plan_sweep(config);
-  const std::string hash = config_hash(config);
-  const MapTaskContext context(config, plan, hash);
-  std::int64_t number = 0;
-  while (std::getline(std::cin, line)) {
-    ++number;
-    TaskRequest request;
-    if (const std::string why = read_task_request(line, context, request); !why.empty()) {
-      // A malformed request is a bug of whoever sent it: refused by name, never run.
-      std::cerr << "agvbench worker: request " << number << ": " << why << "\n";
-      return 2;
-    }
-    run_map_task(context, request.task, request.planners, workspace, [](const MapTaskRun& run) {
-      std::cout << run.record().dump() << "\n" << std::flush;
-    });
+  try {
+    channel.send({{"ready", true}});
+    return serve_tasks(channel, config, workspace);
+  } catch (const std::runtime_error& e) {  // the parent is gone: nobody to answer
+    std::cerr << "agvbench worker: " << e.what() << "\n";
+    return 1;
   }
-  return 0;
 }
 
 }  // namespace agv

@@ -12,6 +12,8 @@
 #include "algos/registry.h"
 #include "core/input_error.h"
 #include "core/text_file.h"
+#include "engine/elf_shape.h"
+#include "engine/exit_guard.h"
 #include "engine/sha256.h"
 
 namespace agv {
@@ -54,14 +56,36 @@ void check_build(const AgvPluginBuild& build, const std::string& who) {
                      "match)");
 }
 
+// What a planner declares beyond its name: its parameters (core/params.h check_param_specs) and
+// its work counters (each one of algos/planner.h WorkCounters', once).
+void check_declarations(const PlannerInfo& info, const std::string& who) {
+  check_param_specs(info.params, who);
+  std::set<std::string> counters;
+  for (const auto& [name, doc] : info.counters) {
+    if (std::find(kWorkCounterNames.begin(), kWorkCounterNames.end(), name) ==
+        kWorkCounterNames.end()) {
+      std::string known;
+      for (const char* k : kWorkCounterNames) known += (known.empty() ? "" : ", ") + std::string(k);
+      throw InputError(who + ": work counter \"" + name + "\" is not one the engine knows (" +
+                       known + ")");
+    }
+    if (!counters.insert(name).second)
+      throw InputError(who + ": work counter \"" + name + "\" declared twice");
+  }
+}
+
 // The plugin's planners, each checked, none registered yet.
 std::vector<PlannerInfo> planners_of(const AgvPlugin& plugin, const std::string& who) {
   std::vector<PlannerInfo> planners;
   if (plugin.add_planners == nullptr) throw InputError(who + ": add_planners is null");
+  const std::string what = who + "'s add_planners";
+  const ForeignCodeScope foreign(what.c_str());
   try {
     plugin.add_planners(&planners);
   } catch (const std::exception& e) {
     throw InputError(who + ": add_planners failed: " + e.what());
+  } catch (...) {
+    throw InputError(who + ": add_planners threw something that is not a std::exception");
   }
   if (planners.empty()) throw InputError(who + ": hands over no planner");
   std::set<std::string> names;
@@ -70,6 +94,7 @@ std::vector<PlannerInfo> planners_of(const AgvPlugin& plugin, const std::string&
       throw InputError(who + ": a planner without a name or a make function");
     if (!names.insert(info.name).second)
       throw InputError(who + ": planner \"" + info.name + "\" handed over twice");
+    check_declarations(info, who + ": planner \"" + info.name + "\"");
     info.plugin = plugin.name;
   }
   return planners;
@@ -97,10 +122,7 @@ const PluginRecord& load_plugin(const std::string& path, const std::string& wher
   const std::string who = where + " \"" + path + "\"";
 
   const std::string bytes = read_text_file(canonical, where, std::uintmax_t{1} << 32);
-  if (bytes.compare(0, 4,
-                    "\x7f"
-                    "ELF") != 0)
-    throw InputError(who + ": not a shared library (no ELF header)");
+  check_elf_shape(bytes, who);
   // RTLD_NOW: an unresolved symbol is an error here, never a crash in the middle of a sweep.
   // Never closed: its planners live as long as the process.
   void* handle = ::dlopen(canonical.c_str(), RTLD_NOW | RTLD_LOCAL);

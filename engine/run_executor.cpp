@@ -9,6 +9,7 @@
 
 #include "algos/search/dijkstra.h"
 #include "core/any_angle.h"
+#include "engine/result_check.h"
 #include "engine/trajectory_judge.h"
 #include "engine/validator.h"
 
@@ -112,6 +113,13 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
   out.metrics.fill(std::numeric_limits<double>::quiet_NaN());
   const PlanRequest request{map.grid(), map.start(), map.goal(), rng, scratch, deadline};
   if (!call_planner(planner, request, out)) return out;
+  if (std::string why = result_names_problem(out.result); !why.empty()) {
+    // Nothing of it is recorded: its extras could pass for what the engine measures.
+    out.outcome = Outcome::crash;
+    out.message = "planner broke the result contract: " + why;
+    out.result = PlanResult{};
+    return out;
+  }
   const PlanResult& r = out.result;
   // Before the planner's own extras, for every outcome the planner returned from: the work was
   // done whether or not the path is good.

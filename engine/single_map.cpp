@@ -1,5 +1,8 @@
 #include "engine/single_map.h"
 
+#include <string>
+
+#include "engine/exit_guard.h"
 #include "engine/sweep_plan.h"
 
 namespace agv {
@@ -14,6 +17,9 @@ RunOutput run_on_map(const Planner& planner, MapReference& map, std::uint64_t se
                      const std::string& cell_key, int map_index, const std::string& label,
                      Scratch& scratch, Deadline deadline, const MotionTimeParams& motion) {
   Rng rng = run_rng(seed, cell_key, map_index, label);
+  const std::string who = "planner \"" + label + "\", in the middle of its run on map " +
+                          std::to_string(map_index) + " of cell " + cell_key + ",";
+  const ForeignCodeScope foreign(who.c_str());
   return execute_run(planner, map, rng, scratch, deadline, motion);
 }
 

@@ -29,7 +29,9 @@
 // on the spot included), mean_abs_w (rad/s, mean |w| command). CPU time per control step is
 // timing and comes from the planner's phases.
 
+#include <array>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -51,6 +53,12 @@ struct TrajectoryVerdict {
 };
 
 TrajectoryVerdict judge_trajectory(const Grid& grid, Cell start, Cell goal, const Trajectory& tr);
+
+// Every metric name a verdict may carry (its `metrics`): names the engine measures, which no
+// planner may report as its own (engine/result_check.h).
+inline constexpr std::array<std::string_view, 7> kJudgedMetricNames = {
+    "travelled_length",      "sim_time_s",         "control_steps", "min_clearance_static",
+    "min_clearance_dynamic", "heading_change_sum", "mean_abs_w"};
 
 // The path metrics of a fusion run's executed positions, corrected by its verdict: the grid's
 // distance transform does not know the unknown cells, and eq. 5.2e's length / speed + node time

@@ -556,5 +556,11 @@ TEST_P(PlannerContract, WaypointCountIsThatOfThePathReturned) {
 INSTANTIATE_TEST_SUITE_P(Registry, PlannerContract, testing::ValuesIn(registered()),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
+// What a plugin's planners must pass when it loads (engine/plugins.cpp): the built-ins pass it too.
+TEST(PlannerDeclarations, EveryBuiltInPassesThePluginCheck) {
+  for (const PlannerInfo& info : planner_registry())
+    EXPECT_NO_THROW(check_param_specs(info.params, info.name)) << info.name;
+}
+
 }  // namespace
 }  // namespace agv

@@ -179,6 +179,76 @@ extern "C" AGVBENCH_PLUGIN_EXPORT const AgvPlugin* agvbench_plugin_v1(void) {
 extern "C" AGVBENCH_PLUGIN_EXPORT int agvbench_plugin_v0(void) { return 0; }
 #endif
 EOF_CPP
+# One more library whose misbehaviour the environment picks (AGV_MISBEHAVE), so that every
+# case below costs one compile: a throw that is not a std::exception, a null factory, malformed
+# parameter and counter declarations, exit() while loading or while planning.
+cat >bad/misbehave.cpp <<'EOF_CPP'
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <vector>
+#include "agvbench/algos/plugin.h"
+#include "agvbench/algos/search/astar.h"
+namespace {
+class ExitPlanner : public agv::Planner {
+ public:
+  agv::PlanResult plan(const agv::PlanRequest&) const override { std::exit(0); }
+};
+std::unique_ptr<agv::Planner> make_exit(const agv::Params&) { return std::make_unique<ExitPlanner>(); }
+// A* whose result is then spoilt as the mode says: a NaN point in its path, an extra metric
+// named as one the engine measures, one given twice.
+class SpoiltAStar : public agv::Planner {
+ public:
+  explicit SpoiltAStar(std::unique_ptr<agv::Planner> inner) : inner_(std::move(inner)) {}
+  agv::PlanResult plan(const agv::PlanRequest& request) const override {
+    agv::PlanResult r = inner_->plan(request);
+    const char* env = std::getenv("AGV_MISBEHAVE");
+    const std::string mode = env ? env : "";
+    if (mode == "nan_path" && r.path.size() >= 2) r.path[1] = {std::nan(""), std::nan("")};
+    if (mode == "reserved_extra") r.extra.push_back({"path_length", 0.0});
+    if (mode == "extra_twice") r.extra.insert(r.extra.end(), {{"mine", 1.0}, {"mine", 2.0}});
+    return r;
+  }
+ private:
+  std::unique_ptr<agv::Planner> inner_;
+};
+decltype(agv::PlannerInfo::make) g_astar_make = nullptr;
+std::unique_ptr<agv::Planner> make_spoilt(const agv::Params& p) {
+  return std::make_unique<SpoiltAStar>(g_astar_make(p));
+}
+void add(void* out) {
+  const char* env = std::getenv("AGV_MISBEHAVE");
+  const std::string mode = env ? env : "";
+  agv::PlannerInfo info = agv::astar_planner();
+  info.name = "misbehave_astar";
+  using agv::ParamSpec;
+  if (mode == "throw_int") throw 42;
+  if (mode == "exit_in_load") std::exit(0);
+  if (mode == "null_make") info.make = nullptr;
+  if (mode == "param_empty_name") info.params.push_back(ParamSpec::number("", 1, 0, 2, "x"));
+  if (mode == "param_twice") info.params.push_back(info.params.front());
+  if (mode == "param_default_outside") info.params.push_back(ParamSpec::number("w", 5, 0, 1, ""));
+  if (mode == "param_empty_range") info.params.push_back(ParamSpec::integer("n", 3, 5, 1, ""));
+  if (mode == "param_no_choices") info.params.push_back(ParamSpec::choice("c", "a", {}, ""));
+  if (mode == "param_default_not_a_choice")
+    info.params.push_back(ParamSpec::choice("c", "z", {"a", "b"}, ""));
+  if (mode == "counter_unknown") info.counters.push_back({"expansions", "nodes"});
+  if (mode == "exit_in_plan") info.make = make_exit;
+  if (mode == "nan_path" || mode == "reserved_extra" || mode == "extra_twice") {
+    g_astar_make = info.make;
+    info.make = make_spoilt;
+  }
+  static_cast<std::vector<agv::PlannerInfo>*>(out)->push_back(std::move(info));
+}
+}  // namespace
+extern "C" AGVBENCH_PLUGIN_EXPORT const AgvPlugin* agvbench_plugin_v1(void) {
+  static const AgvPlugin plugin = {
+      {AGVBENCH_PLUGIN_ABI, AGVBENCH_VERSION, AGVBENCH_PLUGIN_TOOLCHAIN, __VERSION__}, "misbehave",
+      "0.1", add};
+  return &plugin;
+}
+EOF_CPP
 cat >bad/CMakeLists.txt <<'EOF_CM'
 cmake_minimum_required(VERSION 3.22)
 project(bad_plugins LANGUAGES CXX)
@@ -197,6 +267,8 @@ bad_plugin(unresolved ${ok_build} UNRESOLVED PLUGIN_NAME="unresolved" PLANNER_NA
 bad_plugin(builtin_clash ${ok_build} PLUGIN_NAME="builtin_clash" PLANNER_NAME="astar")
 bad_plugin(plugin_clash ${ok_build} PLUGIN_NAME="plugin_clash" PLANNER_NAME="gbfs")
 bad_plugin(name_clash ${ok_build} PLUGIN_NAME="gbfs_plugin" PLANNER_NAME="other_gbfs")
+add_library(misbehave MODULE misbehave.cpp)
+target_link_libraries(misbehave PRIVATE agvbench::plugin)
 # A program of one's own on the installed static libraries (no plugin): the imported targets
 # carry their dependencies.
 add_executable(consumer consumer.cpp)
@@ -266,4 +338,78 @@ sed 's|"\.\./example-build/libgbfs_plugin.so"|"../bad-build/libold_version.so"|'
 "$bin" run sweep/bad.json --out bad_report.json --quiet 2>err.txt
 [ $? -eq 2 ] && grep -q 'plugins\[0\].*libold_version' err.txt && [ ! -e bad_report.json ] &&
   ok "config \"plugins\" with a bad plugin: exit 2, nothing written" || bad "config bad plugin: $(cat err.txt)"
+# Misbehaving plugins (issue 28, classes 5 and 6): each refused when it loads, exit 2 and one line
+# naming the plugin and what is wrong, or, for a planner that calls exit() mid-run, exit 1 with a
+# line saying so (never exit 0 without a report), and under --isolate a run recorded as a crash.
+m=$b/libmisbehave.so
+misbehaves() {  # MODE PATTERN
+  AGV_MISBEHAVE=$1 expect_refusal "plugin: $1" "libmisbehave\.so.*$2" --plugin "$m"
+}
+misbehaves throw_int 'threw something that is not a std::exception'
+misbehaves null_make 'without a name or a make function'
+misbehaves param_empty_name 'parameter "".*a name must be a word'
+misbehaves param_twice 'parameter "[a-z_]+": declared twice'
+misbehaves param_default_outside 'parameter "w" default: 5.* is outside \[0, 1\]'
+misbehaves param_empty_range 'parameter "n": its range \[5, 1\] is empty'
+misbehaves param_no_choices 'parameter "c": a choice without choices'
+misbehaves param_default_not_a_choice 'parameter "c" default: "z" is not one of: a, b'
+misbehaves counter_unknown 'work counter "expansions" is not one the engine knows'
+AGV_MISBEHAVE=exit_in_load "$bin" list --plugin "$m" >out.txt 2>err.txt
+rc=$?
+[ $rc -eq 1 ] && grep -q 'libmisbehave\.so.*add_planners called exit()' err.txt &&
+  ok "plugin: exit() in add_planners: exit 1, $(head -c 150 err.txt)" ||
+  bad "plugin: exit() in add_planners: exit $rc, $(cat err.txt)"
+sed 's|"\.\./example-build/libgbfs_plugin.so"|"../bad-build/libmisbehave.so"|; s|"gbfs",|"misbehave_astar",|; s|{"name": "gbfs", "label": "gbfs_manhattan", "params": {"heuristic": "manhattan"}}|"dijkstra"|' \
+  sweep/config.json >sweep/exit.json
+AGV_MISBEHAVE=exit_in_plan "$bin" run sweep/exit.json --threads 2 --out exit.json --quiet >out.txt 2>err.txt
+rc=$?
+[ $rc -eq 1 ] && grep -q 'planner "misbehave_astar", in the middle of its run on map [0-9]* of cell .*, called exit()' err.txt &&
+  ok "plugin: exit() in plan: exit 1, $(head -c 150 err.txt)" ||
+  bad "plugin: exit() in plan: exit $rc, $(cat err.txt)"
+AGV_MISBEHAVE=exit_in_plan "$bin" run sweep/exit.json --threads 2 "${isolate[@]}" --out exit_iso.json \
+  --runs-out exit_iso.jsonl --quiet >out.txt 2>err.txt
+rc=$?
+$py - exit_iso.jsonl $((runs / 3)) <<'EOF_PY' && [ $rc -eq 0 ] && ok "plugin: exit() in plan under --isolate: every such run a crash, the sweep complete" || bad "plugin: exit() in plan under --isolate: exit $rc, $(tail -3 err.txt)"
+import collections, json, sys
+records = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
+by = collections.Counter((r["planner"], r["outcome"]) for r in records)
+n = int(sys.argv[2])
+assert by[("misbehave_astar", "crash")] == n and by[("astar", "success")] == n, by
+EOF_PY
+# What a planner returns is judged, whoever wrote it: a path with a NaN point is invalid, in a
+# sweep and in `scen`; an extra metric named as one the engine measures, or given twice, makes
+# the run a crash (nothing of it recorded), and the measured value stands.
+spoilt() {  # MODE: the exit.json sweep with misbehave_astar spoilt so
+  AGV_MISBEHAVE=$1 "$bin" run sweep/exit.json --threads 2 --out "$1.json" --runs-out "$1.jsonl" \
+    --quiet >out.txt 2>err.txt || echo "run exit $?" >>err.txt
+}
+judged() {  # MODE OUTCOME MESSAGE_PATTERN
+  spoilt "$1"
+  $py - "$1.jsonl" $((runs / 3)) "$2" "$3" <<'EOF_PY' && ok "plugin: $1: every run $2, the measured metrics untouched" || bad "plugin: $1: $(tail -3 err.txt)"
+import json, re, sys
+records = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
+mine = [r for r in records if r["planner"] == "misbehave_astar"]
+assert len(mine) == int(sys.argv[2]), len(mine)
+assert all(r["outcome"] == sys.argv[3] for r in mine), {r["outcome"] for r in mine}
+assert all(re.search(sys.argv[4], r.get("message", "")) for r in mine), mine[0].get("message")
+assert all(r["metrics"]["path_length"] != 0.0 for r in mine), "a planner's extra replaced path_length"
+EOF_PY
+}
+judged nan_path invalid_path 'not finite|NaN|nan'
+judged reserved_extra crash 'extra metric "path_length" is a name the engine measures'
+judged extra_twice crash 'extra metric "mine" given twice'
+AGV_MISBEHAVE=nan_path "$bin" scen --plugin "$m" --planner misbehave_astar \
+  "$src/tests/data/movingai/random512-10-0.map" "$src/tests/data/movingai/random512-10-0.map.scen" \
+  --json >scen.json 2>err.txt
+$py - scen.json <<'EOF_PY' && ok "plugin: scen counts a path with a NaN point as a failure, never a match" || bad "plugin: scen nan_path: $(head -c 300 scen.json) $(cat err.txt)"
+import json, sys
+doc = json.load(open(sys.argv[1]))
+assert doc["failures"] > 0 and doc["mismatches"] >= doc["failures"], doc
+EOF_PY
+# A truncated copy of a good library: refused before the loader maps it (it would die of SIGBUS).
+size=$(stat -c %s "$b/libgood_astar2.so")
+head -c $((size * 2 / 3)) "$b/libgood_astar2.so" >trunc.so
+expect_refusal "truncated library" 'trunc\.so.*truncated or damaged shared library' --plugin trunc.so
+head -c 40 "$b/libgood_astar2.so" >short.so
+expect_refusal "library shorter than its ELF header" 'short\.so.*shorter than an ELF header' --plugin short.so
 finish test_plugin

@@ -2,6 +2,10 @@
 // filled field; nothing is read back by a second spelling of a name.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+#include <vector>
+
 #include "core/input_error.h"
 #include "core/params.h"
 
@@ -93,6 +97,56 @@ TEST(ParamDecls, ANameDeclaredTwiceIsABug) {
   EXPECT_THROW(d.choice("mode", &Options::mode, Mode::fast,
                         ChoiceTable<Mode>{{"careful", Mode::careful}}, "default not listed"),
                std::logic_error);
+}
+
+// The declarations a plugin hands over are checked when it loads (engine/plugins.cpp): each
+// malformed one is refused with its name and what is wrong; every built-in declaration passes.
+std::string refusal(std::vector<ParamSpec> specs) {
+  try {
+    check_param_specs(specs, "plugin p: planner q");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ParamSpecCheck, RefusesEachMalformedDeclarationNamingIt) {
+  const ParamSpec good = ParamSpec::number("w", 0.5, 0.0, 1.0, "");
+  EXPECT_EQ(refusal({good, ParamSpec::integer("n", 3, 1, 9, ""), ParamSpec::boolean("b", true, ""),
+                     ParamSpec::choice("c", "a", {"a", "b"}, "")}),
+            "");
+  struct Case {
+    std::vector<ParamSpec> specs;
+    std::string says;
+  };
+  ParamSpec bad_type = good;
+  bad_type.type = static_cast<ParamType>(7);
+  ParamSpec nan_bound = good;
+  nan_bound.max = std::nan("");
+  ParamSpec stray_choices = good;
+  stray_choices.choices = {"x"};
+  ParamSpec text_default = good;
+  text_default.default_value = "high";
+  const Case cases[] = {
+      {{ParamSpec::number("", 1, 0, 2, "")}, "parameter \"\": a name must be a word"},
+      {{ParamSpec::number("Weight", 1, 0, 2, "")}, "parameter \"Weight\": a name must be a word"},
+      {{good, good}, "parameter \"w\": declared twice"},
+      {{bad_type}, "parameter \"w\": unknown type 7"},
+      {{nan_bound}, "parameter \"w\": a bound is NaN"},
+      {{ParamSpec::integer("n", 3, 5, 1, "")}, "parameter \"n\": its range [5, 1] is empty"},
+      {{ParamSpec::number("w", 5, 0, 1, "")}, "parameter \"w\" default: 5.0 is outside [0, 1]"},
+      {{text_default}, "parameter \"w\" default: expected a number, got \"high\""},
+      {{ParamSpec::choice("c", "a", {}, "")}, "parameter \"c\": a choice without choices"},
+      {{ParamSpec::choice("c", "a", {"a", "a"}, "")}, "parameter \"c\": choice \"a\" listed twice"},
+      {{ParamSpec::choice("c", "z", {"a", "b"}, "")},
+       "parameter \"c\" default: \"z\" is not one of: a, b"},
+      {{stray_choices}, "parameter \"w\": choices given for a parameter that is not a choice"},
+  };
+  for (const Case& c : cases) {
+    const std::string text = refusal(c.specs);
+    EXPECT_NE(text.find("plugin p: planner q: " + c.says), std::string::npos)
+        << "expected \"" << c.says << "\", got \"" << text << "\"";
+  }
 }
 
 }  // namespace

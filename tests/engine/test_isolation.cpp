@@ -2,10 +2,17 @@
 // `--isolate`-style worker processes (this binary is its own worker). Each fault costs exactly
 // one run, recorded with its outcome within 1.25x the hard limit; every other run is present.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <new>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -26,7 +33,34 @@ namespace {
 
 std::string g_self;
 
-enum class Fault { hang, segfault, throws, hog };
+enum class Fault { hang, segfault, throws, hog, chatter, spawner };
+
+// A planner that prints (a line that looks like a record, bytes that are not UTF-8) and reads
+// stdin, then gives up with a message that is not UTF-8 either: none of it may reach the
+// worker's channel.
+PlanResult chatter() {
+  std::cout << "{\"task_id\": \"forged\"}" << std::endl;
+  std::printf("\xff\xfe not text\n");
+  std::fflush(stdout);
+  char c = 0;
+  const ssize_t got = ::read(STDIN_FILENO, &c, 1);  // /dev/null in a worker: nothing
+  return PlanResult::failed(Failure::limit, got > 0 ? "read the channel" : "gave up \xff");
+}
+
+// A planner that starts a process (which would sleep for a minute), notes its pid in
+// $AGV_TEST_SPAWN_DIR, then hangs: the worker is killed at the hard limit, and the child with it.
+[[noreturn]] void spawn_then_hang() {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::sleep(60);
+    ::_exit(0);
+  }
+  if (const char* dir = std::getenv("AGV_TEST_SPAWN_DIR"); dir != nullptr && child > 0)
+    std::ofstream(std::string(dir) + "/" + std::to_string(child)) << child;
+  for (volatile bool spin = true; spin;) {
+  }
+  std::abort();
+}
 
 class FaultyPlanner : public Planner {
  public:
@@ -47,6 +81,10 @@ class FaultyPlanner : public Planner {
         std::vector<std::vector<char>> hog;
         for (;;) hog.emplace_back(std::size_t{64} << 20, char{1});
       }
+      case Fault::chatter:
+        return chatter();
+      case Fault::spawner:
+        spawn_then_hang();
     }
     return PlanResult::failed(Failure::invalid_input, "unreachable");
   }
@@ -55,11 +93,22 @@ class FaultyPlanner : public Planner {
   Fault fault_;
 };
 
+template <Fault F>
+std::unique_ptr<Planner> make_faulty(const Params&) {
+  return std::make_unique<FaultyPlanner>(F);
+}
+
 PlannerInfo faulty(const std::string& name, Fault f) {
   PlannerInfo info;
   info.name = name;
   info.summary = "deliberately faulty test planner";
   switch (f) {
+    case Fault::chatter:
+      info.make = make_faulty<Fault::chatter>;
+      break;
+    case Fault::spawner:
+      info.make = make_faulty<Fault::spawner>;
+      break;
     case Fault::hang:
       info.make = [](const Params&) -> std::unique_ptr<Planner> {
         return std::make_unique<FaultyPlanner>(Fault::hang);
@@ -89,6 +138,8 @@ void register_faulty_planners() {
   add_planner_for_testing(faulty("test_segfault", Fault::segfault));
   add_planner_for_testing(faulty("test_throw", Fault::throws));
   add_planner_for_testing(faulty("test_hog", Fault::hog));
+  add_planner_for_testing(faulty("test_chatter", Fault::chatter));
+  add_planner_for_testing(faulty("test_spawner", Fault::spawner));
 }
 
 SweepConfig faulty_config(std::vector<std::string> faulty_names) {
@@ -154,6 +205,54 @@ TEST(Isolation, EveryFaultCostsOneRunAndIsRecorded) {
   }
   std::cout << "isolated sweep with " << hang[static_cast<int>(Outcome::timeout)] << " hangs took "
             << wall << " s\n";
+}
+
+// What a planner prints or reads never reaches the worker protocol: its runs are recorded with
+// its own outcome (limit, the message's bad bytes replaced), no run is a crash, and the sweep
+// equals an in-process one.
+TEST(Isolation, PlannerOutputNeverReachesTheChannel) {
+  const SweepConfig config = faulty_config({"test_chatter"});
+  const SweepResults r = run_sweep(config, isolated(10.0));
+  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(outcomes(r, 1)[static_cast<int>(Outcome::limit)], 4);
+  EXPECT_EQ(outcomes(r, 0)[static_cast<int>(Outcome::success)], 4);
+  EXPECT_EQ(outcomes(r, 2)[static_cast<int>(Outcome::success)], 4);
+}
+
+// Whatever a planner starts dies with its worker: killed at the hard limit, the worker's whole
+// process group goes.
+TEST(Isolation, AWorkersChildrenDieWithIt) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("agv_spawn_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  ::setenv("AGV_TEST_SPAWN_DIR", dir.c_str(), 1);
+  const SweepConfig config = faulty_config({"test_spawner"});
+  const SweepResults r = run_sweep(config, isolated(1.0));
+  ::unsetenv("AGV_TEST_SPAWN_DIR");
+  EXPECT_EQ(outcomes(r, 1)[static_cast<int>(Outcome::timeout)], 4);
+  int children = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    ++children;
+    const std::string pid = entry.path().filename().string();
+    // Gone, or a zombie waiting for init to reap it: never still running (its sleep is 60 s).
+    // A SIGKILL takes effect a moment after it is sent: up to 5 s for the last one.
+    char state = 'R';
+    for (int tries = 0; tries < 500 && state != 'Z' && state != 'X'; ++tries) {
+      if (tries > 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      std::ifstream stat("/proc/" + pid + "/stat");
+      std::string text;
+      if (!std::getline(stat, text)) {
+        state = 'X';  // no such process
+        break;
+      }
+      const std::size_t paren = text.rfind(')');
+      state = paren != std::string::npos && paren + 2 < text.size() ? text[paren + 2] : 'X';
+    }
+    EXPECT_TRUE(state == 'Z' || state == 'X') << "child " << pid << " is in state " << state;
+  }
+  EXPECT_EQ(children, 4);
+  fs::remove_all(dir);
 }
 
 TEST(Isolation, ThrowIsACrashEvenWithoutIsolation) {

@@ -1,0 +1,16 @@
+#pragma once
+// What a planner hands back beyond its path, checked before the engine measures anything: the
+// names of its extra metrics and phases. An extra metric may not take a name the engine measures
+// itself (a run metric, a work counter, a trajectory verdict's metric): it would replace the
+// measured value in the journal and the report. No name may be empty or given twice.
+
+#include <string>
+
+#include "algos/planner.h"
+
+namespace agv {
+
+// Empty when the result keeps to this; else why not, naming the metric or phase.
+std::string result_names_problem(const PlanResult& result);
+
+}  // namespace agv

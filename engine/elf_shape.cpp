@@ -30,22 +30,23 @@ void check_segments(const std::string& bytes, const Elf64_Ehdr& h, const std::st
   const std::uint64_t file = bytes.size();
   if (h.e_phentsize != sizeof(Elf64_Phdr) || h.e_phnum == 0 ||
       !inside(h.e_phoff, h.e_phnum, sizeof(Elf64_Phdr), file))
-    throw InputError(who + ": truncated or damaged shared library (its program headers lie "
-                           "outside the file's " +
+    throw InputError(who +
+                     ": truncated or damaged shared library (its program headers lie "
+                     "outside the file's " +
                      std::to_string(file) + " bytes)");
   for (int i = 0; i < h.e_phnum; ++i) {
     Elf64_Phdr p;
     std::memcpy(&p, bytes.data() + h.e_phoff + static_cast<std::uint64_t>(i) * sizeof p, sizeof p);
     if (p.p_type != PT_LOAD && p.p_type != PT_DYNAMIC) continue;
     if (!inside(p.p_offset, 1, p.p_filesz, file))
-      throw InputError(who + ": truncated or damaged shared library (segment " +
-                       std::to_string(i) + " ends at byte " +
-                       std::to_string(p.p_offset + p.p_filesz) + " of a file of " +
-                       std::to_string(file) + ")");
+      throw InputError(who + ": truncated or damaged shared library (segment " + std::to_string(i) +
+                       " ends at byte " + std::to_string(p.p_offset + p.p_filesz) +
+                       " of a file of " + std::to_string(file) + ")");
   }
   if (h.e_shnum != 0 && !inside(h.e_shoff, h.e_shnum, h.e_shentsize, file))
-    throw InputError(who + ": truncated or damaged shared library (its section headers lie "
-                           "outside the file)");
+    throw InputError(who +
+                     ": truncated or damaged shared library (its section headers lie "
+                     "outside the file)");
 }
 
 }  // namespace

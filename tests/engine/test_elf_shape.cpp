@@ -37,7 +37,8 @@ TEST(ElfShape, ARealLibraryPassesItsTruncatedCopiesDoNot) {
   const std::string lib = runtime_library();
   ASSERT_GT(lib.size(), 4096U);
   EXPECT_EQ(refusal(lib), "");
-  for (const std::size_t keep : {lib.size() - 1, lib.size() * 2 / 3, lib.size() / 3, std::size_t{200}})
+  for (const std::size_t keep :
+       {lib.size() - 1, lib.size() * 2 / 3, lib.size() / 3, std::size_t{200}})
     EXPECT_NE(refusal(lib.substr(0, keep)).find("truncated or damaged shared library"),
               std::string::npos)
         << keep << " bytes: " << refusal(lib.substr(0, keep));

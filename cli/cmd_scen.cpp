@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -51,6 +52,9 @@ void check_queries(const ScenCommand& cmd, const Grid& grid,
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const auto& q = queries[i];
     const std::string where = cmd.scen_file + ": query " + std::to_string(i + 1);
+    const std::string given = std::filesystem::path(cmd.map_file).filename().string();
+    if (std::filesystem::path(q.map).filename().string() != given)
+      throw InputError(where + ": names map '" + q.map + "', not " + given);
     if (q.map_width != grid.width() || q.map_height != grid.height())
       throw InputError(where + ": map size " + std::to_string(q.map_width) + "x" +
                        std::to_string(q.map_height) + " does not match " + cmd.map_file);

@@ -118,7 +118,7 @@ MapFileSet load_movingai(const json& params, const std::string& base_dir, double
         if (bucket_hi < 0 || (q.bucket >= bucket_lo && q.bucket <= bucket_hi))
           in_range.push_back(std::move(q));
       for (std::size_t k = 0; k < in_range.size(); k += static_cast<std::size_t>(every)) {
-        check_scenario_fits(f.grid, in_range[k], scen);
+        check_scenario_fits(f.grid, in_range[k], scen, f.path);
         f.queries.push_back(std::move(in_range[k]));
       }
       if (f.queries.empty())

@@ -34,8 +34,9 @@ std::vector<ScenarioQuery> read_scen(const std::string& path);
 std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name);
 
 // Throws InputError "SCEN:LINE: ..." when the query's declared map size differs from the grid,
-// or its start or goal lies outside the grid or on an obstacle. `scen_name` names the file.
-void check_scenario_fits(const Grid& grid, const ScenarioQuery& query,
-                         const std::string& scen_name);
+// or its start or goal lies outside the grid or on an obstacle, or (given `map_path`, the map
+// file the queries are for) its map column names another file. `scen_name` names the file.
+void check_scenario_fits(const Grid& grid, const ScenarioQuery& query, const std::string& scen_name,
+                         const std::string& map_path = "");
 
 }  // namespace agv

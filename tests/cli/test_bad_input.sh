@@ -99,6 +99,10 @@ printf 'version 1\n0\tok.map\t3\t3\t0\t0\t1\t1\t1.41421356\n' >obstacle.scen
 expect "scen: goal on an obstacle" 'query 1: goal \(1,1\) is an obstacle' "$bin" scen ok.map obstacle.scen
 printf 'version 1\n0\tok.map\t3\t3\t0\t0\tx\t1\t1.4\n' >garbled.scen
 expect "scen: malformed line" 'garbled.scen:2' "$bin" scen ok.map garbled.scen
+printf 'version 1\n0\tother.map\t3\t3\t0\t0\t1\t0\t1\n' >other.scen
+expect "scen: queries of another map" "query 1: names map 'other.map', not ok.map" "$bin" scen ok.map other.scen
+printf 'version 1\n0\tok.map\t3\t3\t0\t0\t2\t2\t1.5\n' >short.scen
+expect "scen: optimum shorter than the straight line" 'short.scen:2: optimal length 1.5 is shorter than the straight line' "$bin" scen ok.map short.scen
 expect "CLI: bad option value" 'threads' "$bin" run --threads -4
 
 # The config as a whole (issue 15, classes 5 and 6): `validate` refuses everything `run` would,

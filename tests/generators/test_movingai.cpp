@@ -295,6 +295,8 @@ TEST(MovingAi, MalformedScenariosNameTheLine) {
       {"version 1\n0\ta.map\t0\t10\t0\t0\t0\t0\t0\n", 2, "map width 0"},
       {"version 1\n-1\ta.map\t10\t10\t1\t2\t3\t4\t5\n", 2, "bucket"},
       {"version 1\n0\ta.map\t10\t10\t1.0\t2\t3\t4\t5\n", 2, "start x"},
+      // From (1, 2) to (7, 6) no path is shorter than sqrt(52) = 7.21.
+      {"version 1\n0\ta.map\t10\t10\t1\t2\t7\t6\t7.2\n", 2, "shorter than the straight line"},
   };
   for (const BadInput& c : cases) {
     try {
@@ -318,7 +320,7 @@ TEST(MovingAi, ScenarioMustFitTheMap) {
       "0\ta.map\t10\t8\t3\t4\t5\t5\t5\n"     // start on an obstacle
       "0\ta.map\t10\t8\t1\t2\t3\t4\t5\n"     // goal on an obstacle
       "0\ta.map\t10\t10\t1\t2\t5\t5\t5\n"    // declared size differs
-      "0\ta.map\t12\t8\t11\t2\t5\t5\t5\n");  // declared size differs (and start outside)
+      "0\ta.map\t12\t8\t11\t2\t5\t5\t7\n");  // declared size differs (and start outside)
   ASSERT_EQ(q.size(), 5U);
   EXPECT_NO_THROW(check_scenario_fits(g, q[0], "s.scen"));
   const char* expected[] = {"s.scen:3: start (3, 4) is on an obstacle",
@@ -331,6 +333,15 @@ TEST(MovingAi, ScenarioMustFitTheMap) {
     } catch (const InputError& e) {
       EXPECT_EQ(std::string(e.what()).rfind(expected[i - 1], 0), 0U) << e.what();
     }
+  }
+  // Queries for the map they are checked against: its file name, whatever folders the column
+  // names before it.
+  EXPECT_NO_THROW(check_scenario_fits(g, q[0], "s.scen", "/data/maps/a.map"));
+  try {
+    check_scenario_fits(g, q[0], "s.scen", "b.map");
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "s.scen:2: names map 'a.map', not b.map");
   }
   ScenarioQuery outside = q[0];
   outside.start = {10, 0};

@@ -22,6 +22,7 @@
 #include "core/corner_rule.h"
 #include "engine/validator.h"
 #include "generators/map_generators.h"
+#include "tests/test_size.h"
 
 namespace agv {
 namespace {
@@ -62,7 +63,8 @@ MapInstance random_map(double density, int index) {
 }
 
 constexpr double kDensities[] = {0.1, 0.2, 0.3};
-constexpr int kMapsPerDensity = 170;  // 510 maps per planner
+// 510 maps per planner; 120 under a sanitizer (tests/test_size.h).
+constexpr int kMapsPerDensity = test::sized(170, 40);
 
 const std::vector<MapInstance>& sweep_maps() {
   static const std::vector<MapInstance> maps = [] {

@@ -19,6 +19,7 @@
 #include "generators/movingai.h"
 #include "generators/occupancy_image.h"
 #include "tests/movingai_data.h"
+#include "tests/test_size.h"
 
 namespace agv {
 namespace {
@@ -180,9 +181,10 @@ void expect_scen_optima(const std::string& glob, int every, std::int64_t expecte
   EXPECT_EQ(report["config"]["references"], json({{"any_angle", false}}));
 }
 
-// Every 4th query of the shipped slices: 89 of random512's 356, 76 of the maze's 303.
+// Every 4th query of the shipped slices: 89 of random512's 356, 76 of the maze's 303. Under a
+// sanitizer (tests/test_size.h) every 16th: 23 and 19, the same reader and sweep on fewer maps.
 TEST(MapFiles, ScenQueriesOfTheShippedMapsMatchTheirOptimum) {
-  expect_scen_optima(kShipped + "/*.map", 4, 89 + 76);
+  expect_scen_optima(kShipped + "/*.map", test::sized(4, 16), test::sized(89 + 76, 23 + 19));
 }
 
 // The acceptance check of issue 16: every 20th .scen query of every map of the full sets (942 of

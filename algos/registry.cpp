@@ -210,7 +210,9 @@ ConfiguredPlanner configure_planner(const std::string& name, const nlohmann::jso
   if (info == nullptr) {
     std::string known;
     for (const auto* p : all_planners()) known += (known.empty() ? "" : ", ") + p->name;
-    throw InputError(where + ": unknown planner \"" + name + "\" (known: " + known + ")");
+    throw InputError(where + ": unknown planner \"" + name + "\" (known: " + known +
+                     "; a plugin's planner is known once its library is loaded, with --plugin or "
+                     "the config's \"plugins\")");
   }
   ConfiguredPlanner c;
   c.info = info;

@@ -10,6 +10,7 @@
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "core/input_error.h"
+#include "core/json_text.h"
 #include "core/text_file.h"
 #include "engine/report_compare.h"
 
@@ -65,7 +66,7 @@ int command_compare(const CompareCommand& cmd) {
     nlohmann::json doc = comparison_json(c);
     doc["before"] = cmd.before;
     doc["after"] = cmd.after;
-    std::cout << doc.dump(1) << "\n";
+    std::cout << json_text(doc, 1) << "\n";
   } else {
     std::cout << "agvbench compare: " << cmd.before << " -> " << cmd.after << "\n"
               << comparison_text(c);

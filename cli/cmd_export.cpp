@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "engine/config_loader.h"
 #include "engine/environment.h"
+#include "engine/files_read.h"
 #include "engine/journal.h"
 #include "engine/output_paths.h"
 #include "engine/report.h"
@@ -28,7 +29,7 @@ struct ExportCommand {
 int command_export(const ExportCommand& cmd) {
   const std::string located = locate_config(cmd.config);
   const SweepConfig config = load_config(located);
-  std::vector<InputPath> inputs = {{"config file", located}};
+  std::vector<InputPath> inputs = files_read(config, located);
   for (const auto& j : cmd.journals) inputs.push_back({"journal", j});
   check_paths(inputs, {{"--sqlite", cmd.sqlite, OutputKind::database}});
   check_results_db(cmd.sqlite, "--sqlite");
@@ -63,6 +64,6 @@ Command add_export_command(CLI::App& app) {
   sub->add_option("journals", cmd->journals, "JSON Lines journals")->required();
   sub->add_option("--config", cmd->config, "the sweep config of the journals")->required();
   sub->add_option("--sqlite", cmd->sqlite, "database (created or appended to)")->required();
-  return {sub, [cmd] { return command_export(*cmd); }, false};
+  return {sub, [cmd] { return command_export(*cmd); }};
 }
 }  // namespace agv

@@ -9,6 +9,7 @@
 #include "algos/registry.h"
 #include "cli/command.h"
 #include "core/input_error.h"
+#include "core/json_text.h"
 #include "engine/plugins.h"
 #include "generators/map_files.h"
 #include "generators/registry.h"
@@ -28,13 +29,13 @@ struct ListOptions {
 void print_params(const std::vector<ParamSpec>& params) {
   for (const auto& p : params) {
     const auto j = p.to_json();
-    std::cout << "    " << p.name << " = " << p.default_value.dump();
+    std::cout << "    " << p.name << " = " << json_text(p.default_value);
     if (p.type == ParamType::choice) {
       std::string list;
       for (const auto& c : p.choices) list += (list.empty() ? "" : "|") + c;
       std::cout << "  (" << list << ")";
     } else if (p.type != ParamType::boolean) {
-      std::cout << "  [" << j["min"].dump() << ", " << j["max"].dump() << "]";
+      std::cout << "  [" << json_text(j["min"]) << ", " << json_text(j["max"]) << "]";
     }
     std::cout << "\n        " << p.doc << "\n";
   }
@@ -104,7 +105,7 @@ int command_list(const ListOptions& options) {
         doc["plugins"].push_back(std::move(entry));
       }
     }
-    std::cout << doc.dump(2) << "\n";
+    std::cout << json_text(doc, 2) << "\n";
     return 0;
   }
   if (options.brief) {

@@ -7,6 +7,7 @@
 #include "cli/command.h"
 #include "cli/locate_config.h"
 #include "engine/config_loader.h"
+#include "engine/files_read.h"
 #include "engine/journal.h"
 #include "engine/output_paths.h"
 #include "engine/report.h"
@@ -20,7 +21,7 @@ int command_merge(const std::string& config_path, const std::vector<std::string>
   const std::string located = locate_config(config_path);
   const SweepConfig config = load_config(located);
   const std::string path = out.empty() ? config.report_path : out;
-  std::vector<InputPath> inputs = {{"config file", located}};
+  std::vector<InputPath> inputs = files_read(config, located);
   for (const auto& j : journals) inputs.push_back({"journal", j});
   check_paths(inputs, {{out.empty() ? "report" : "--out", path}});
   ignore_file_size_signal();

@@ -13,7 +13,8 @@
 #include "cli/cli_params.h"
 #include "cli/command.h"
 #include "cli/option_checks.h"
-#include "engine/json_text.h"
+#include "core/json_text.h"
+#include "engine/files_read.h"
 #include "engine/output_paths.h"
 #include "engine/report.h"
 #include "engine/run_executor.h"
@@ -299,7 +300,9 @@ void print_runs(const PlanCommand& cmd, const PlanMap& map,
 int command_plan(const PlanCommand& cmd) {
   const std::vector<const PlannerInfo*> infos = plan_planners(cmd);
   if (!cmd.json_out.empty()) {
-    check_paths({{"--map", cmd.map_file}}, {{"--json-out", cmd.json_out}});
+    std::vector<InputPath> inputs = {{"--map", cmd.map_file}};
+    add_plugins_read(loaded_plugins(), inputs);
+    check_paths(inputs, {{"--json-out", cmd.json_out}});
     ignore_file_size_signal();
   }
   const PlanMap map = plan_map(cmd);

@@ -17,6 +17,7 @@
 #include "cli/run_count.h"
 #include "engine/config_loader.h"
 #include "engine/environment.h"
+#include "engine/files_read.h"
 #include "engine/journal.h"
 #include "engine/output_paths.h"
 #include "engine/report.h"
@@ -91,13 +92,10 @@ void check_run_paths(const RunCommand& cmd, const std::string& config_path,
                                  ? OutputPath{"--resume", options.resume_path, OutputKind::appended}
                                  : OutputPath{cmd.runs_out.empty() ? "runs" : "--runs-out",
                                               options.runs_path, OutputKind::new_journal};
-  std::vector<InputPath> inputs = {{"config file", config_path}};
-  for (const auto& g : config.generators)  // a map source's files are inputs too
-    if (g.files)
-      for (const auto& f : g.files->files) inputs.push_back({"map file", f.path});
-  check_paths(inputs, {{cmd.out.empty() ? "report" : "--out", config.report_path},
-                       journal,
-                       {"--db", cmd.db, OutputKind::database}});
+  check_paths(files_read(config, config_path),
+              {{cmd.out.empty() ? "report" : "--out", config.report_path},
+               journal,
+               {"--db", cmd.db, OutputKind::database}});
   if (!cmd.db.empty()) check_results_db(cmd.db, "--db");
   ignore_file_size_signal();
 }

@@ -6,6 +6,7 @@
 #include "cli/command.h"
 #include "cli/run_count.h"
 #include "engine/config_loader.h"
+#include "engine/files_read.h"
 #include "engine/output_paths.h"
 #include "engine/sweep_plan.h"
 #include "engine/sweep_size.h"
@@ -18,7 +19,7 @@ int command_validate(const std::string& config_path) {
   const SweepConfig config = load_config(config_path);
   // The paths a plain `run CONFIG` would write (--out, --runs-out and --resume are run's).
   check_paths(
-      {{"config file", config_path}},
+      files_read(config, config_path),
       {{"report", config.report_path}, {"runs", config.runs_path, OutputKind::new_journal}});
   const SweepPlan plan = plan_sweep(config);
   std::printf("%s: ok: %s, about %s held in memory\n", config_path.c_str(),

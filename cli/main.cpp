@@ -8,10 +8,15 @@
 
 #include "cli/command.h"
 #include "core/input_error.h"
+#include "core/printable.h"
 #include "engine/environment.h"
 #include "engine/plugins.h"
 
 namespace {
+
+// Messages quote files and file names: on one line, without their raw bytes, and not a megabyte of
+// a binary file's first line (core/printable.h).
+constexpr std::size_t kMessageBytes = 2000;
 
 // The one subcommand the command line chose (CLI11 requires exactly one).
 int run_chosen(const std::vector<agv::Command>& commands, const std::vector<std::string>& plugins) {
@@ -47,10 +52,10 @@ int main(int argc, char** argv) {
   try {
     return run_chosen(commands, plugins);
   } catch (const agv::InputError& e) {
-    std::fprintf(stderr, "agvbench: error: %s\n", e.what());
+    std::fprintf(stderr, "agvbench: error: %s\n", agv::printable(e.what(), kMessageBytes).c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "agvbench: failed: %s\n", e.what());
+    std::fprintf(stderr, "agvbench: failed: %s\n", agv::printable(e.what(), kMessageBytes).c_str());
     return 1;
   }
 }

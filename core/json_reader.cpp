@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/input_error.h"
+#include "core/json_text.h"
 
 namespace agv {
 
@@ -75,11 +76,11 @@ void ObjectReader::finish(const std::string& known) const {
 }
 
 double ObjectReader::check_number(const json& v, const std::string& field, double lo, double hi) {
-  if (!v.is_number()) throw InputError(field + ": expected a number, got " + v.dump());
+  if (!v.is_number()) throw InputError(field + ": expected a number, got " + json_text(v));
   const double x = v.get<double>();
   if (!std::isfinite(x) || x < lo || x > hi) {
     std::ostringstream msg;
-    msg << field << ": " << v.dump() << " is outside [" << lo << ", " << hi << "]";
+    msg << field << ": " << json_text(v) << " is outside [" << lo << ", " << hi << "]";
     throw InputError(msg.str());
   }
   return x;
@@ -87,8 +88,9 @@ double ObjectReader::check_number(const json& v, const std::string& field, doubl
 
 long long ObjectReader::check_integer(const json& v, const std::string& field, long long lo,
                                       long long hi) {
-  if (!v.is_number_integer()) throw InputError(field + ": expected an integer, got " + v.dump());
-  const std::string outside = field + ": " + v.dump() + " is outside [" + std::to_string(lo) +
+  if (!v.is_number_integer())
+    throw InputError(field + ": expected an integer, got " + json_text(v));
+  const std::string outside = field + ": " + json_text(v) + " is outside [" + std::to_string(lo) +
                               ", " + std::to_string(hi) + "]";
   // Above 2^63 - 1 nlohmann holds an unsigned value that get<long long> would wrap negative.
   if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi))

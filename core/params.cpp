@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <sstream>
 
+#include "core/json_text.h"
+
 namespace agv {
 
 using nlohmann::json;
@@ -89,10 +91,10 @@ std::string range_text(const ParamSpec& s) {
 json check_value(const ParamSpec& s, const json& v, const std::string& field) {
   switch (s.type) {
     case ParamType::number: {
-      if (!v.is_number()) throw InputError(field + ": expected a number, got " + v.dump());
+      if (!v.is_number()) throw InputError(field + ": expected a number, got " + json_text(v));
       const double x = v.get<double>();
       if (!std::isfinite(x) || x < s.min || x > s.max)
-        throw InputError(field + ": " + v.dump() + " is outside " + range_text(s));
+        throw InputError(field + ": " + json_text(v) + " is outside " + range_text(s));
       return x;
     }
     case ParamType::integer: {
@@ -101,21 +103,22 @@ json check_value(const ParamSpec& s, const json& v, const std::string& field) {
             std::abs(v.get<double>()) < 9e15) {
           return check_value(s, json(static_cast<long long>(v.get<double>())), field);
         }
-        throw InputError(field + ": expected an integer, got " + v.dump());
+        throw InputError(field + ": expected an integer, got " + json_text(v));
       }
       // Above 2^63 - 1 nlohmann holds an unsigned value that get<long long> would wrap negative.
       if (v.is_number_unsigned() && static_cast<double>(v.get<std::uint64_t>()) > s.max)
-        throw InputError(field + ": " + v.dump() + " is outside " + range_text(s));
+        throw InputError(field + ": " + json_text(v) + " is outside " + range_text(s));
       const auto x = v.get<long long>();
       if (static_cast<double>(x) < s.min || static_cast<double>(x) > s.max)
-        throw InputError(field + ": " + v.dump() + " is outside " + range_text(s));
+        throw InputError(field + ": " + json_text(v) + " is outside " + range_text(s));
       return x;
     }
     case ParamType::boolean:
-      if (!v.is_boolean()) throw InputError(field + ": expected true or false, got " + v.dump());
+      if (!v.is_boolean())
+        throw InputError(field + ": expected true or false, got " + json_text(v));
       return v;
     case ParamType::choice: {
-      if (!v.is_string()) throw InputError(field + ": expected a string, got " + v.dump());
+      if (!v.is_string()) throw InputError(field + ": expected a string, got " + json_text(v));
       const auto& text = v.get_ref<const std::string&>();
       for (const auto& c : s.choices)
         if (c == text) return v;

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "core/input_error.h"
+#include "core/printable.h"
 
 namespace agv {
 
@@ -15,7 +16,13 @@ namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what,
                        const std::string& reason) {
-  throw InputError(what + " \"" + path + "\": " + reason);
+  throw InputError(what + " \"" + printable(path, kPathBytes) + "\": " + reason);
+}
+
+// The system's calls end a name at its first NUL: the file read would be another one.
+void refuse_nul(const std::string& path, const std::string& what) {
+  if (path.find('\0') != std::string::npos)
+    fail(path, what, "holds a NUL byte, which no file name can (it would read another file)");
 }
 
 }  // namespace
@@ -30,6 +37,7 @@ std::string file_kind(mode_t mode) {
 }
 
 void require_regular_file(const std::string& path, const std::string& what) {
+  refuse_nul(path, what);
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) fail(path, what, std::strerror(errno));
   if (!S_ISREG(st.st_mode)) fail(path, what, file_kind(st.st_mode) + ", not a regular file");
@@ -44,6 +52,7 @@ bool strip_utf8_bom(std::string& text) {
 
 std::string read_text_file(const std::string& path, const std::string& what,
                            std::uintmax_t max_bytes) {
+  refuse_nul(path, what);
   // Opened first, then checked through the descriptor: the file checked is the file read.
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) fail(path, what, std::strerror(errno));

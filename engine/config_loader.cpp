@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/json_reader.h"
+#include "core/json_text.h"
 #include "core/rng.h"
 #include "core/text_file.h"
 #include "engine/sweep_plan.h"
@@ -71,7 +72,7 @@ void refuse_moved_shape_params(const json& j) {
         throw InputError(
             "map." + key + ": a shape parameter of generator \"" + g.name +
             "\"; it now goes in that generator's entry: \"generators\": [{\"name\": \"" + g.name +
-            "\", \"params\": {\"" + key + "\": " + value.dump() + "}}]");
+            "\", \"params\": {\"" + key + "\": " + json_text(value) + "}}]");
       }
     }
   }
@@ -109,7 +110,7 @@ void parse_map_options(const json& j, MapSpec& map) {
     if (!given) continue;
     const json& v = r.raw(key);
     if (!v.is_array() || v.size() != 2)
-      throw InputError(r.field(key) + ": expected [x, y] (0-based cells), got " + v.dump());
+      throw InputError(r.field(key) + ": expected [x, y] (0-based cells), got " + json_text(v));
     cell->x = static_cast<int>(
         ObjectReader::check_integer(v[0], r.field(key) + "[0]", 0, kMapSideRange.hi - 1));
     cell->y = static_cast<int>(
@@ -236,16 +237,16 @@ void read_map_files(SweepConfig& c, const std::vector<json>& stated_files) {
       const json& then = stated_files[i];
       for (std::size_t k = 0; k < now.size(); ++k) {
         if (!then.is_array() || k >= then.size() || then[k].value("name", "") != now[k]["name"])
-          throw InputError("generators[" + std::to_string(i) + "].map_files: " + then.dump() +
-                           " is not the files its params match now (" + now.dump() + ")");
+          throw InputError("generators[" + std::to_string(i) + "].map_files: " + json_text(then) +
+                           " is not the files its params match now (" + json_text(now) + ")");
         if (then[k].value("content_hash", "") != now[k]["content_hash"])
           throw InputError("generators[" + std::to_string(i) + "]: map file " + set->files[k].path +
                            " changed (content hash " + then[k].value("content_hash", "") +
                            " then, " + now[k]["content_hash"].get<std::string>() + " now)");
       }
       if (then.size() != now.size())
-        throw InputError("generators[" + std::to_string(i) + "].map_files: " + then.dump() +
-                         " is not the files its params match now (" + now.dump() + ")");
+        throw InputError("generators[" + std::to_string(i) + "].map_files: " + json_text(then) +
+                         " is not the files its params match now (" + json_text(now) + ")");
     }
     e.resolved = set->resolved;
     e.files = std::move(set);
@@ -265,8 +266,8 @@ std::vector<double> parse_densities(ObjectReader& r) {
     const auto [it, added] = first_index.emplace(text, i);
     if (!added)
       throw InputError(
-          f + ": " + arr[i].dump() + " names the same cells as " + r.field("densities") + "[" +
-          std::to_string(it->second) + "] (" + arr[it->second].dump() +
+          f + ": " + json_text(arr[i]) + " names the same cells as " + r.field("densities") + "[" +
+          std::to_string(it->second) + "] (" + json_text(arr[it->second]) +
           "): densities are told apart by their first 10 significant digits (\"" + text + "\")");
   }
   return densities;
@@ -336,16 +337,16 @@ std::vector<PlannerEntry> parse_planners(ObjectReader& r, const SweepConfig& swe
     e.resolved = configured.params.values();
     e.looser_than_model = std::move(configured.looser_than_model);
     if (!stated_looser.is_null() && stated_looser != looser_json(e.looser_than_model))
-      throw InputError(where + ".looser_than_model: " + stated_looser.dump() +
-                       " is not what its params give (" + looser_json(e.looser_than_model).dump() +
-                       ")");
+      throw InputError(where + ".looser_than_model: " + json_text(stated_looser) +
+                       " is not what its params give (" +
+                       json_text(looser_json(e.looser_than_model)) + ")");
     // A planner set looser than the model is a variant: its label must say it is not the
     // registry's planner, whose results are those under the model.
     if (!e.looser_than_model.empty() && e.label == e.name) {
       const ModelDeviation& d = e.looser_than_model.front();
-      throw InputError(where + ".params." + d.param + ": " + d.value.dump() +
+      throw InputError(where + ".params." + d.param + ": " + json_text(d.value) +
                        " is looser than the sweep's collision model (" +
-                       to_string(sweep.collision) + ", which asks for " + d.model.dump() +
+                       to_string(sweep.collision) + ", which asks for " + json_text(d.model) +
                        "); such a variant needs a \"label\" of its own, and its paths are "
                        "still judged under the model");
     }
@@ -365,7 +366,7 @@ json parse_sources(const json& j, const std::string& where) {
       parse_sources(value, where + "." + key);
     } else if (!value.is_string()) {
       throw InputError(where + "." + key + ": expected a string (free text) or an object, got " +
-                       value.dump());
+                       json_text(value));
     }
   }
   return j;

@@ -14,8 +14,8 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "core/json_text.h"
 #include "engine/config_loader.h"
-#include "engine/json_text.h"
 #include "engine/map_task.h"
 
 extern char** environ;
@@ -53,7 +53,7 @@ std::string read_task_request(const std::string& line, const MapTaskContext& con
   if (task == request.end() || !task->is_number_unsigned() ||
       task->get<std::uint64_t>() >= static_cast<std::uint64_t>(tasks))
     return "\"task\" must be a map task index in [0, " + std::to_string(tasks) + "), got " +
-           (task == request.end() ? std::string("none") : task->dump());
+           (task == request.end() ? std::string("none") : json_text(*task));
   out.task = static_cast<std::int64_t>(task->get<std::uint64_t>());
   const auto planners = request.find("planners");
   if (planners == request.end() || !planners->is_array())
@@ -64,7 +64,7 @@ std::string read_task_request(const std::string& line, const MapTaskContext& con
   out.planners.clear();
   for (const auto& p : *planners) {
     if (!p.is_number_unsigned() || p.get<std::uint64_t>() >= count)
-      return "planner index " + p.dump() + " is not in [0, " + std::to_string(count) + ")";
+      return "planner index " + json_text(p) + " is not in [0, " + std::to_string(count) + ")";
     const auto index = static_cast<std::size_t>(p.get<std::uint64_t>());
     if (map_index >= scoped_maps(context.config.planners[index], cell))
       return "planner " + std::to_string(index) + " is not scheduled on task " +
@@ -224,7 +224,7 @@ void WorkerProcess::start_task(std::int64_t task, std::span<const std::size_t> p
   const nlohmann::json request = {
       {"task", task}, {"planners", std::vector<std::size_t>(planners.begin(), planners.end())}};
   try {
-    write_all(to_child_, request.dump() + "\n");
+    write_all(to_child_, json_text(request) + "\n");
   } catch (const std::runtime_error&) {
     // Died between tasks; next_run's read reports the death.
   }

@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "core/input_error.h"
+#include "core/json_text.h"
 #include "core/text_file.h"
 #include "engine/run_record.h"
 
@@ -110,9 +111,9 @@ bool RecordRestorer::restore(const json& rec, const std::string& where) {
     const json version = rec.value("journal_version", json());
     if (tool != kJournalTool || version != kJournalVersion)
       throw InputError(where + ": not a record of this agvbench's journal format (it says tool " +
-                       (tool.is_null() ? std::string("(none)") : tool.dump()) +
+                       (tool.is_null() ? std::string("(none)") : json_text(tool)) +
                        ", journal_version " +
-                       (version.is_null() ? std::string("(none)") : version.dump()) +
+                       (version.is_null() ? std::string("(none)") : json_text(version)) +
                        "; this agvbench reads tool \"" + kJournalTool + "\", journal_version " +
                        std::to_string(kJournalVersion) + ")");
     const std::string hash = rec.at("config_hash").get<std::string>();
@@ -146,7 +147,17 @@ RunSlot RecordRestorer::slot_of_record(const json& rec, const std::string& where
   if (!outcome) throw InputError(where + ": unknown outcome");
   slot.outcome = *outcome;
   slot.metrics.fill(std::numeric_limits<double>::quiet_NaN());
-  for (const auto& [name, value] : rec.at("metrics").items()) {
+  // This engine writes every one of its metrics, null where undefined: a record without one was
+  // written by an agvbench that measures others (the journal format alone does not say), and
+  // mixing its values in would report two definitions under one name.
+  const json& metrics = rec.at("metrics");
+  for (const auto name : kRunMetricNames)
+    if (!metrics.contains(name))
+      throw InputError(where + ": no metric \"" + std::string(name) +
+                       "\": written by an agvbench that measures other metrics than this one "
+                       "(which writes path_length, ..., every one, null when undefined); start a "
+                       "new journal");
+  for (const auto& [name, value] : metrics.items()) {
     bool known = false;
     for (std::size_t i = 0; i < kRunMetricNames.size(); ++i) {
       if (kRunMetricNames[i] == name) {

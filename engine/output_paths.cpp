@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "core/input_error.h"
+#include "core/printable.h"
 #include "core/text_file.h"
 
 namespace agv {
@@ -34,7 +35,7 @@ std::string normalised(const std::string& path) {
 }
 
 [[noreturn]] void refuse(const OutputPath& out, const std::string& reason) {
-  throw InputError(out.what + " \"" + out.path + "\": " + reason);
+  throw InputError(out.what + " \"" + printable(out.path, kPathBytes) + "\": " + reason);
 }
 
 void check_one(const OutputPath& out) {
@@ -74,13 +75,17 @@ void check_paths(const std::vector<InputPath>& inputs, const std::vector<OutputP
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const OutputPath& out = outputs[i];
     if (out.path.empty()) continue;
+    // The system's calls end a name at its first NUL: the file written would be another one.
+    if (out.path.find('\0') != std::string::npos)
+      refuse(out, "holds a NUL byte, which no file name can (it would write another file)");
     for (const InputPath& in : inputs)
       if (!in.path.empty() && same_file(out.path, in.path))
-        refuse(out,
-               "is the " + in.what + " \"" + in.path + "\" (an output never replaces an input)");
+        refuse(out, "is the " + in.what + " \"" + printable(in.path, kPathBytes) +
+                        "\" (an output never replaces an input)");
     for (std::size_t j = 0; j < i; ++j)
       if (!outputs[j].path.empty() && same_file(out.path, outputs[j].path))
-        refuse(out, "is also the " + outputs[j].what + " \"" + outputs[j].path +
+        refuse(out, "is also the " + outputs[j].what + " \"" +
+                        printable(outputs[j].path, kPathBytes) +
                         "\" (two outputs cannot share a file)");
     check_one(out);
   }

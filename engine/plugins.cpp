@@ -11,6 +11,7 @@
 #include "algos/plugin.h"
 #include "algos/registry.h"
 #include "core/input_error.h"
+#include "core/json_text.h"
 #include "core/text_file.h"
 #include "engine/elf_shape.h"
 #include "engine/exit_guard.h"
@@ -177,8 +178,8 @@ const PluginRecord& load_recorded_plugin(const nlohmann::json& entry, const std:
     if (!entry.contains(key)) continue;
     const nlohmann::json have = loaded.as_run()[key];
     if (entry[key] != have)
-      throw InputError(where + " \"" + loaded.path + "\": its " + key + " is " + have.dump() +
-                       ", the config recorded " + entry[key].dump() +
+      throw InputError(where + " \"" + loaded.path + "\": its " + key + " is " + json_text(have) +
+                       ", the config recorded " + json_text(entry[key]) +
                        " (the file changed since the sweep was configured)");
   }
   for (const auto& [key, value] : entry.items())

@@ -14,8 +14,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/json_text.h"
 #include "engine/environment.h"
-#include "engine/json_text.h"
 #include "engine/metric_specs.h"
 #include "engine/statistics.h"
 

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "core/json_text.h"
 #include "core/rng.h"
 #include "core/text_file.h"
 #include "engine/report.h"
@@ -30,8 +31,9 @@ void require_report(const json& r, const std::string& name) {
     throw InputError(name + ": not an agvbench report (no \"tool\": \"agvbench\", config, cells)");
   const json version = r.value("schema_version", json());
   if (version != kReportSchemaVersion)
-    throw InputError(name + ": report schema_version " + version.dump() + "; this agvbench reads " +
-                     std::to_string(kReportSchemaVersion) + " (re-run the sweep)");
+    throw InputError(name + ": report schema_version " + json_text(version) +
+                     "; this agvbench reads " + std::to_string(kReportSchemaVersion) +
+                     " (re-run the sweep)");
 }
 
 // The config without what `compare` lets differ: the planners' parameters (and what they
@@ -46,7 +48,7 @@ json without_planner_params(json config) {
 }
 
 std::string short_dump(const json& v) {
-  std::string text = v.dump();
+  std::string text = json_text(v);
   return text.size() > 80 ? text.substr(0, 77) + "..." : text;
 }
 
@@ -89,7 +91,7 @@ std::vector<std::string> parameter_changes(const json& a, const json& b) {
     std::string line = pa[i].value("label", std::string()) + ":";
     for (const std::string& k : keys) {
       const json u = x.value(k, json()), v = y.value(k, json());
-      if (u != v) line += " " + k + " " + u.dump() + " -> " + v.dump();
+      if (u != v) line += " " + k + " " + json_text(u) + " -> " + json_text(v);
     }
     out.push_back(line);
   }
@@ -310,7 +312,7 @@ std::string p_text(double p) {
 }  // namespace
 
 std::string report_config_hash(const json& report) {
-  const std::uint64_t h = stable_hash(report.at("config").dump());
+  const std::uint64_t h = stable_hash(json_text(report.at("config")));
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
   return buf;

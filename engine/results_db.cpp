@@ -5,11 +5,13 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 #include <vector>
 
 #include "core/input_error.h"
+#include "core/json_text.h"
 #include "core/rng.h"
 #include "engine/journal.h"
 #include "engine/report.h"
@@ -134,6 +136,18 @@ CREATE VIEW IF NOT EXISTS run_values AS
 
 class Statement;
 
+// How long a write waits for another connection's transaction: 10 s, or AGVBENCH_SQLITE_WAIT_MS.
+int busy_wait_ms() {
+  const char* env = std::getenv("AGVBENCH_SQLITE_WAIT_MS");
+  if (env == nullptr || *env == '\0') return 10000;
+  char* end = nullptr;
+  const long v = std::strtol(env, &end, 10);
+  if (*end != '\0' || v < 0 || v > 3'600'000)
+    throw InputError(std::string("AGVBENCH_SQLITE_WAIT_MS: \"") + env +
+                     "\" is not a whole number of milliseconds in [0, 3600000]");
+  return static_cast<int>(v);
+}
+
 // One open database; every failure names the file and SQLite's message.
 class Database {
  public:
@@ -147,7 +161,7 @@ class Database {
       db_ = nullptr;
       throw InputError(option + " \"" + path + "\": cannot be opened: " + message);
     }
-    sqlite3_busy_timeout(db_, 10000);  // another writer's transaction: wait, then fail
+    sqlite3_busy_timeout(db_, busy_wait_ms());  // another writer's transaction: wait, then fail
   }
   ~Database() { sqlite3_close(db_); }
   Database(const Database&) = delete;
@@ -158,7 +172,21 @@ class Database {
   // "--sqlite \"PATH\"": how messages name the database.
   std::string named() const { return option_ + " \"" + path_ + "\""; }
 
+  // A damaged file is bad input (exit 2); another connection's lock, or any other failure, a
+  // runtime one (exit 1). Each says what was going on and SQLite's own words.
   [[noreturn]] void fail(const std::string& doing) const {
+    const int code = sqlite3_errcode(db_) & 0xff;  // the primary code of an extended one
+    const std::string sqlite = std::string("SQLite: ") + sqlite3_errmsg(db_);
+    if (code == SQLITE_CORRUPT || code == SQLITE_NOTADB)
+      throw InputError(named() + ": is a damaged SQLite database (" + sqlite + "; " + doing +
+                       "); left as it is");
+    if (code == SQLITE_BUSY || code == SQLITE_LOCKED) {
+      char waited[32];
+      std::snprintf(waited, sizeof waited, "%g", busy_wait_ms() / 1000.0);
+      throw std::runtime_error(named() + ": is locked by another connection, still after " +
+                               waited + " s of waiting (" + sqlite + "; " + doing +
+                               "); run again once it is done");
+    }
     throw std::runtime_error(named() + ": " + doing + ": " + sqlite3_errmsg(db_));
   }
   void exec(const char* sql, const char* doing) {
@@ -236,15 +264,14 @@ class Statement {
 
 std::int64_t Database::integer(const char* sql) {
   sqlite3_stmt* stmt = nullptr;
-  const int rc = sqlite3_prepare_v2(db_, sql, -1, &stmt, nullptr);
-  if (rc == SQLITE_NOTADB || (rc == SQLITE_OK && sqlite3_step(stmt) == SQLITE_NOTADB) ||
-      sqlite3_errcode(db_) == SQLITE_NOTADB) {
-    sqlite3_finalize(stmt);
-    throw InputError(named() + ": is not an SQLite database (left as it is)");
-  }
-  if (rc != SQLITE_OK) fail("cannot read the database header");
-  const std::int64_t v = sqlite3_column_int64(stmt, 0);
+  int rc = sqlite3_prepare_v2(db_, sql, -1, &stmt, nullptr);
+  if (rc == SQLITE_OK) rc = sqlite3_step(stmt);
+  // A query that did not give its row (locked, damaged) would read as 0: a misdiagnosis.
+  const std::int64_t v = rc == SQLITE_ROW ? sqlite3_column_int64(stmt, 0) : 0;
   sqlite3_finalize(stmt);
+  if ((rc & 0xff) == SQLITE_NOTADB)
+    throw InputError(named() + ": is not an SQLite database (left as it is)");
+  if (rc != SQLITE_ROW) fail("reading the database header");
   return v;
 }
 
@@ -318,8 +345,8 @@ std::int64_t insert_experiment(Database& db, const ExperimentRecord& e, const st
   s.bind(1, c.name)
       .bind(2, hash)
       .bind(3, digest)
-      .bind(4, report.at("config").dump())
-      .bind(5, e.environment.dump())
+      .bind(4, json_text(report.at("config")))
+      .bind(5, json_text(e.environment))
       .bind(6, e.environment.value("date_utc", std::string()))
       .bind(7, e.source)
       .bind(8, kReportSchemaVersion)
@@ -346,7 +373,7 @@ void insert_planners_and_cells(Database& db, std::int64_t id, const ExperimentRe
         .bind(2, p)
         .bind(3, c.planners[p].label)
         .bind(4, c.planners[p].name)
-        .bind(5, config.at("planners").at(p).at("params").dump())
+        .bind(5, json_text(config.at("planners").at(p).at("params")))
         .bind(6, c.planners[p].label == c.baseline)
         .run();
   }

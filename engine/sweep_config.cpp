@@ -1,5 +1,6 @@
 #include "engine/sweep_config.h"
 
+#include "core/json_text.h"
 #include "core/rng.h"
 
 namespace agv {
@@ -106,7 +107,7 @@ json config_as_run(const SweepConfig& c) {
 std::string config_hash(const SweepConfig& c) {
   json as_run = config_as_run(c);
   as_run.erase("sources");  // commentary: a reworded source is the same sweep
-  const std::uint64_t h = stable_hash(as_run.dump());
+  const std::uint64_t h = stable_hash(json_text(as_run));
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
   return buf;

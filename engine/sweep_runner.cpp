@@ -13,8 +13,8 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "core/json_text.h"
 #include "engine/journal.h"
-#include "engine/json_text.h"
 #include "engine/map_task.h"
 
 namespace agv {
@@ -67,7 +67,7 @@ WorkerLaunch worker_launch(const SweepConfig& config, const IsolationOptions& is
   launch.command = iso.command;
   if (launch.command.empty()) launch.command = {"/proc/self/exe", "worker"};
   launch.config_line =
-      nlohmann::json{{"config", config_as_run(config)}, {"base_dir", config.base_dir}}.dump();
+      json_text(nlohmann::json{{"config", config_as_run(config)}, {"base_dir", config.base_dir}});
   launch.hard_limit_s = iso.hard_limit_s > 0 ? iso.hard_limit_s : 2.0 * config.time_limit_s + 1.0;
   return launch;
 }

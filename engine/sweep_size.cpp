@@ -1,5 +1,6 @@
 #include "engine/sweep_size.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -73,17 +74,39 @@ SweepSize sweep_size(const SweepConfig& config) {
   return size;
 }
 
-double usable_memory_bytes() {
+namespace {
+
+// The address space this process has mapped already (/proc/self/statm's first field).
+double mapped_bytes(double page_size) {
+  std::ifstream statm("/proc/self/statm");
+  double pages = 0.0;
+  return statm >> pages ? pages * page_size : 0.0;
+}
+
+}  // namespace
+
+UsableMemory usable_memory() {
   const long pages = sysconf(_SC_PHYS_PAGES);
   const long page_size = sysconf(_SC_PAGE_SIZE);
-  double bytes = pages > 0 && page_size > 0
-                     ? static_cast<double>(pages) * static_cast<double>(page_size)
-                     : 0.0;
+  UsableMemory m;
+  m.source = "this machine has";
+  if (pages > 0 && page_size > 0)
+    m.bytes = static_cast<double>(pages) * static_cast<double>(page_size);
+  const auto lower = [&m](double limit, const char* source) {
+    if (limit > 0 && (m.bytes == 0.0 || limit < m.bytes)) m = {limit, source};
+  };
   // A container's limit (cgroup v2); "max" when there is none.
   std::ifstream cgroup("/sys/fs/cgroup/memory.max");
   double limit = 0.0;
-  if (cgroup >> limit && limit > 0 && (bytes == 0.0 || limit < bytes)) bytes = limit;
-  return bytes;
+  if (cgroup >> limit) lower(limit, "the container's memory.max is");
+  // Past RLIMIT_AS an allocation throws bad_alloc mid-sweep: the estimate must see it first.
+  struct rlimit as {};
+  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY && page_size > 0) {
+    const double left =
+        static_cast<double>(as.rlim_cur) - mapped_bytes(static_cast<double>(page_size));
+    lower(std::max(left, 1.0), "the address-space limit (ulimit -v) leaves");
+  }
+  return m;
 }
 
 std::string bytes_text(double bytes) {
@@ -100,15 +123,15 @@ std::string bytes_text(double bytes) {
 
 void check_sweep_size(const SweepConfig& config) {
   const SweepSize size = sweep_size(config);
-  const double memory = usable_memory_bytes();
-  if (memory <= 0.0 || size.bytes <= kMemoryShare * memory) return;
+  const UsableMemory memory = usable_memory();
+  if (memory.bytes <= 0.0 || size.bytes <= kMemoryShare * memory.bytes) return;
   char counts[160];
   std::snprintf(counts, sizeof counts,
                 " maps in each of %.0f cells for %zu planners make %.4g run slots, about ",
                 size.cells, config.planners.size(), size.run_slots);
   throw InputError("maps_per_cell: " + std::to_string(config.maps_per_cell) + counts +
-                   bytes_text(size.bytes) + " held while the sweep runs; this machine has " +
-                   bytes_text(memory) +
+                   bytes_text(size.bytes) + " held while the sweep runs; " + memory.source + " " +
+                   bytes_text(memory.bytes) +
                    " and a sweep may use half of it: lower maps_per_cell (or "
                    "the number of sizes, densities, generators or planners)");
 }

@@ -20,9 +20,15 @@ struct SweepSize {
   double bytes = 0;  // estimate
 };
 SweepSize sweep_size(const SweepConfig& config);
-// Physical memory, or the cgroup's memory.max when that is lower; 0 when neither is known.
-double usable_memory_bytes();
-// InputError naming maps_per_cell when the estimate exceeds half of usable_memory_bytes() (the
+// The memory a sweep of this process can have: physical memory, the cgroup's memory.max, or what
+// the address-space limit (RLIMIT_AS, `ulimit -v`) leaves above what is mapped already, whichever
+// is lowest; 0 bytes when none is known. `source` says which, for messages.
+struct UsableMemory {
+  double bytes = 0.0;
+  std::string source;  // "this machine has", "the container's memory.max is", ...
+};
+UsableMemory usable_memory();
+// InputError naming maps_per_cell when the estimate exceeds half of usable_memory() (the
 // rest is headroom: the maps, planner scratch and the report being built).
 void check_sweep_size(const SweepConfig& config);
 // "1.5 GiB"

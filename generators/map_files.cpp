@@ -13,6 +13,7 @@
 #include "core/connectivity.h"
 #include "core/input_error.h"
 #include "core/json_reader.h"
+#include "core/json_text.h"
 #include "core/str_cat.h"
 #include "core/text_file.h"
 #include "generators/occupancy_image.h"
@@ -78,7 +79,8 @@ MapFileSet load_movingai(const json& params, const std::string& base_dir, double
   std::string queries = "endpoints";
   if (const json* q = p.get("queries")) {
     if (!q->is_string() || (*q != "scen" && *q != "endpoints"))
-      throw InputError(p.field("queries") + ": " + q->dump() + " is not one of: scen, endpoints");
+      throw InputError(p.field("queries") + ": " + json_text(*q) +
+                       " is not one of: scen, endpoints");
     queries = q->get<std::string>();
   }
   set.queries = queries == "scen" ? QuerySource::scen : QuerySource::endpoints;
@@ -108,9 +110,11 @@ MapFileSet load_movingai(const json& params, const std::string& base_dir, double
     f.name = names[i];
     f.path = matched[i];
     std::string bytes = read_text_file(f.path, "map file");
+    f.read = {{"map file", f.path}};
     f.grid = with_cell_edge(read_map(f.path), cell_edge);
     if (set.queries == QuerySource::scen) {
       const std::string scen = f.path + ".scen";
+      f.read.push_back({"scenario file of " + f.path, scen});
       bytes += '\0';
       bytes += read_text_file(scen, "scenario file (" + f.path + " with queries \"scen\")");
       std::vector<ScenarioQuery> in_range;
@@ -148,7 +152,9 @@ MapFileSet load_image(const json& params, const std::string& base_dir, double ce
     f.path = matched[i];
     OccupancyImage image = read_occupancy_image(f.path, cell_edge);
     std::string bytes = read_text_file(f.path, "map file");
+    f.read = {{"map file", f.path}};
     if (image.image_path != f.path) {
+      f.read.push_back({"occupancy image named by " + f.path, image.image_path});
       bytes += '\0';
       bytes += read_text_file(image.image_path, "occupancy image (named by " + f.path + ")");
     }

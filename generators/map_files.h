@@ -26,10 +26,17 @@ enum class QuerySource {
   scen,       // the file's .scen queries: the 0th, Nth, 2Nth... (scen_every), within scen_buckets
 };
 
+// A file read for a map, named for messages ("map file", "scenario file of a.map").
+struct FileRead {
+  std::string what;
+  std::string path;
+};
+
 struct MapFile {
-  std::string name;          // names the cell: the file name, or its path where two share one
-  std::string path;          // the path read (the config's folder joined with the match)
-  std::string content_hash;  // 16 hex digits over the bytes of every file read for it
+  std::string name;            // names the cell: the file name, or its path where two share one
+  std::string path;            // the path read (the config's folder joined with the match)
+  std::string content_hash;    // 16 hex digits over the bytes of every file read for it
+  std::vector<FileRead> read;  // every file read for it: the map, then its .scen or image
   Grid grid;
   std::vector<ScenarioQuery> queries;  // queries "scen": the selected queries, in file order
 };

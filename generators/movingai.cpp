@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "core/printable.h"
 #include "core/str_cat.h"
 #include "core/text_file.h"
 
@@ -77,9 +78,10 @@ bool parse_double(std::string_view s, double& value) {
 int parse_size_line(LineReader& reader, const std::string& text, std::string_view key) {
   const auto t = tokens(text);
   if (t.size() != 2 || t[0] != key)
-    reader.fail(str_cat("expected '", key, " N', found '", text, "'"));
+    reader.fail(str_cat("expected '", key, " N', found '", printable(text), "'"));
   long long v = 0;
-  if (!parse_int(t[1], v)) reader.fail(str_cat(key, " '", t[1], "' is not a whole number"));
+  if (!parse_int(t[1], v))
+    reader.fail(str_cat(key, " '", printable(t[1]), "' is not a whole number"));
   if (v < 1 || v > kMaxMapSide)
     reader.fail(str_cat(key, " ", v, " is outside [1, ", kMaxMapSide, "]"));
   return static_cast<int>(v);
@@ -102,7 +104,7 @@ Grid parse_map(std::istream& in, const std::string& name) {
   };
   header("type octile");
   if (const auto t = tokens(text); t.size() != 2 || t[0] != "type" || t[1] != "octile") {
-    reader.fail(str_cat("expected 'type octile', found '", text, "'"));
+    reader.fail(str_cat("expected 'type octile', found '", printable(text), "'"));
   }
   header("height");
   const int height = parse_size_line(reader, text, "height");
@@ -110,7 +112,7 @@ Grid parse_map(std::istream& in, const std::string& name) {
   const int width = parse_size_line(reader, text, "width");
   header("map");
   if (const auto t = tokens(text); t.size() != 1 || t[0] != "map") {
-    reader.fail(str_cat("expected 'map', found '", text, "'"));
+    reader.fail(str_cat("expected 'map', found '", printable(text), "'"));
   }
 
   Grid grid(width, height);
@@ -177,7 +179,7 @@ std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name)
     const auto t = tokens(text);
     if (!have_version) {
       if (t.size() != 2 || t[0] != "version" || (t[1] != "1" && t[1] != "1.0")) {
-        reader.fail(str_cat("expected 'version 1', found '", text, "'"));
+        reader.fail(str_cat("expected 'version 1', found '", printable(text), "'"));
       }
       have_version = true;
       continue;
@@ -203,7 +205,8 @@ std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name)
     long long v[7] = {};
     for (int i = 0; i < 7; ++i) {
       if (!parse_int(int_fields[i], v[i])) {
-        reader.fail(str_cat(kIntNames[i], " '", int_fields[i], "' is not a whole number"));
+        reader.fail(
+            str_cat(kIntNames[i], " '", printable(int_fields[i]), "' is not a whole number"));
       }
     }
     if (v[0] < 0 || v[0] > 1'000'000'000) reader.fail(str_cat("bucket ", v[0], " is out of range"));
@@ -220,7 +223,8 @@ std::vector<ScenarioQuery> parse_scen(std::istream& in, const std::string& name)
       }
     }
     if (!parse_double(t[n - 1], q.optimal_length) || q.optimal_length < 0.0) {
-      reader.fail(str_cat("optimal length '", t[n - 1], "' is not a non-negative number"));
+      reader.fail(
+          str_cat("optimal length '", printable(t[n - 1]), "' is not a non-negative number"));
     }
     // No path is shorter than the straight line (the octile optimum is at least as long): a
     // smaller figure is a damaged file, and every planner would seem to beat it. The margin is
@@ -255,7 +259,7 @@ void check_scenario_fits(const Grid& grid, const ScenarioQuery& query, const std
   if (!map_path.empty()) {
     const std::string named = std::filesystem::path(query.map).filename().string();
     const std::string given = std::filesystem::path(map_path).filename().string();
-    if (named != given) fail(str_cat("names map '", query.map, "', not ", given));
+    if (named != given) fail(str_cat("names map '", printable(query.map), "', not ", given));
   }
   if (query.map_width != grid.width() || query.map_height != grid.height()) {
     fail(str_cat("declares a ", query.map_width, "x", query.map_height, " map but the map is ",

@@ -7,9 +7,13 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
+#include <new>
 #include <sstream>
+#include <stdexcept>
 
+#include "core/printable.h"
 #include "core/str_cat.h"
 #include "core/text_file.h"
 
@@ -155,7 +159,13 @@ ImagePixels read_png(const std::string& path) {
   const bool has_alpha = (image.format & PNG_FORMAT_FLAG_ALPHA) != 0;
   // 8-bit RGBA whatever the file holds: libpng converts grey, palette and 16-bit images.
   image.format = PNG_FORMAT_RGBA;
-  std::vector<unsigned char> rgba(PNG_IMAGE_SIZE(image));
+  std::vector<unsigned char> rgba;
+  try {
+    rgba.resize(PNG_IMAGE_SIZE(image));
+  } catch (const std::bad_alloc&) {
+    png_image_free(&image);
+    throw;
+  }
   if (png_image_finish_read(&image, nullptr, rgba.data(), 0, nullptr) == 0) throw failed("pixels");
   ImagePixels out;
   out.width = static_cast<int>(image.width);
@@ -193,8 +203,16 @@ namespace {
 
 ImagePixels read_image(const std::string& path) {
   const std::string ext = lower_extension(path);
-  if (ext == ".pgm") return read_pgm(path);
-  if (ext == ".png") return read_png(path);
+  // A few kilobytes of PNG can declare 8192x8192 pixels, about 400 MiB decoded: past what this
+  // process may allocate, that is a runtime failure naming the file, not a bare bad_alloc.
+  try {
+    if (ext == ".pgm") return read_pgm(path);
+    if (ext == ".png") return read_png(path);
+  } catch (const std::bad_alloc&) {
+    throw std::runtime_error(path +
+                             ": decoding the image needs more memory than this process can "
+                             "allocate (ulimit -v, the container's memory.max or the machine's)");
+  }
   throw InputError(path + ": not an occupancy image this reader knows (.yaml, .pgm or .png)");
 }
 
@@ -212,11 +230,16 @@ OccupancyImage read_yaml(const std::string& path) {
   std::string image;
   double resolution = 0.0;
   bool have_resolution = false;
+  std::map<std::string, int>
+      seen;  // key -> its line: YAML forbids a key twice, yaml-cpp keeps both
   for (const auto& kv : root) {
     const int line = kv.first.Mark().line + 1;
     std::string key;
     try {
       key = kv.first.as<std::string>();
+      if (const auto [at, fresh] = seen.emplace(key, line); !fresh)
+        throw InputError(str_cat(path, ":", line, ": ", printable(key),
+                                 ": given twice (first at line ", at->second, ")"));
       const YAML::Node& v = kv.second;
       const auto number = [&](double lo, double hi) {
         const double x = v.as<double>();

@@ -66,14 +66,30 @@ def journal_records(path):
             yield n, r
 
 
+def config_hash(config):
+    """The hash a journal's records carry for the report's `config` (agvbench compare's
+    report_config_hash): 64-bit FNV-1a over the config as the engine writes it compactly, keys
+    sorted, non-ASCII characters as themselves."""
+    text = json.dumps(config, sort_keys=True, separators=(",", ":"), ensure_ascii=False)
+    h = 0xcbf29ce484222325
+    for byte in text.encode("utf-8"):
+        h = ((h ^ byte) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+    return f"{h:016x}"
+
+
 def load_runs(path, doc):
-    """Read RUNS.jsonl; every record must be an agvbench journal record of this version whose
-    cell and planner are in the report `doc` (a journal of another sweep is refused)."""
+    """Read RUNS.jsonl; every record must be an agvbench journal record of this version of the
+    report `doc`'s sweep: its config hash, cell and planner (a journal of another sweep, even of
+    a config of the same name, is refused)."""
+    want = config_hash(doc["config"]) if isinstance(doc.get("config"), dict) else None
     cells = {cell_key(c) for c in doc["cells"]}
     planners = {p["planner"] for c in doc["cells"] for p in c["planners"]}
     runs = Runs(path)
     try:
         for n, r in journal_records(path):
+            if want is not None and r.get("config_hash") != want:
+                raise ReportError(f"line {n}: a record of config {r.get('config_hash')!r}, not of "
+                                  f"the report's (hash {want!r}): the journal of another sweep")
             if r["cell"] not in cells:
                 raise ReportError(f"line {n}: cell {r['cell']!r} is not in the report "
                                   "(the journal of another sweep?)")

@@ -96,6 +96,37 @@ expect_exit "export into a missing folder: exit 2" 2 "$bin" export tiny1.jsonl -
 expect_exit "export of an empty journal: exit 2" 2 "$bin" export empty.jsonl --config tiny.json --sqlite new.db
 expect_exit "export of a journal of another config: exit 2" 2 "$bin" export quick.jsonl --config tiny.json --sqlite new.db
 
+# Issue 28, class 8. A database another connection holds locked: exit 1 after the wait (shortened
+# here by AGVBENCH_SQLITE_WAIT_MS), named as locked, not as another application's or empty.
+cp small.db locked.db
+cp small.db locked.orig
+coproc LOCK { sqlite3 -batch locked.db; }
+echo "BEGIN EXCLUSIVE; SELECT 'held';" >&"${LOCK[1]}"
+read -r held <&"${LOCK[0]}"  # the lock is taken once sqlite3 answers
+expect_exit "export into a locked database: exit 1 (held: $held)" 1 \
+  env AGVBENCH_SQLITE_WAIT_MS=300 "$bin" export tiny1.jsonl --config tiny.json --sqlite locked.db
+check "... named as locked by another connection" grep -q -- '--sqlite "locked.db": is locked by another connection, still after 0.3 s' last.err
+expect_exit "run --db into a locked database: exit 1" 1 \
+  env AGVBENCH_SQLITE_WAIT_MS=300 "$bin" run tiny.json --out locked.report --db locked.db --quiet
+check "... named as locked" grep -q -- '--db "locked.db": is locked by another connection' last.err
+echo "COMMIT;" >&"${LOCK[1]}"
+exec {LOCK[1]}>&-
+wait "$LOCK_PID"
+check "... and left as it was" cmp locked.db locked.orig
+expect_exit "a bad AGVBENCH_SQLITE_WAIT_MS: exit 2" 2 \
+  env AGVBENCH_SQLITE_WAIT_MS=soon "$bin" export tiny1.jsonl --config tiny.json --sqlite locked.db
+check "... naming it" grep -q 'AGVBENCH_SQLITE_WAIT_MS: "soon" is not a whole number' last.err
+# A damaged database (the header of its first b-tree page overwritten): exit 2, named as damaged,
+# left as it is.
+cp small.db damaged.db
+printf 'xxxxxxxx' | dd of=damaged.db bs=1 seek=100 conv=notrunc 2>/dev/null
+cp damaged.db damaged.orig
+expect_exit "export into a damaged database: exit 2" 2 "$bin" export tiny1.jsonl --config tiny.json --sqlite damaged.db
+check "... named as damaged" grep -q -- '--sqlite "damaged.db": is a damaged SQLite database' last.err
+expect_exit "run --db into a damaged database: exit 2 before the sweep" 2 "$bin" run tiny.json --out damaged.report --db damaged.db --quiet
+check "... no report written" test ! -e damaged.report
+check "... and the database left as it was" cmp damaged.db damaged.orig
+
 # compare
 check "a second run of the same config" "$bin" run tiny.json --out tiny2.json --runs-out tiny2.jsonl --quiet
 expect_exit "compare two runs of one config: exit 0" 0 "$bin" compare tiny1.json tiny2.json --runs-before tiny1.jsonl --runs-after tiny2.jsonl

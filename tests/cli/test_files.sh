@@ -97,6 +97,38 @@ refused "merge --out its config" '--out "c.json": is the config file' \
   "$bin" merge j.jsonl --config c.json --out c.json
 refused "plan --json-out the map" '--json-out "m.map": is the --map' \
   "$bin" plan --map m.map --start 0,0 --goal 3,3 --json-out m.map
+# Every file a config makes a command read (engine/files_read.h), however spelled: a map, its
+# .scen, a YAML map and the image it names.
+mkdir maps
+tiny_map >maps/a.map
+printf 'version 1\n0\ta.map\t4\t4\t0\t0\t3\t3\t4.24264069\n' >maps/a.map.scen
+{ printf 'P5\n4 4\n255\n'; printf '\376%.0s' $(seq 16); } >maps/f.pgm
+printf 'image: f.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n' >maps/f.yaml
+files_config() {  # $1 = report path
+  cat <<JSON
+{"name": "read", "seed": 3, "maps_per_cell": 1, "planners": ["astar"], "report": "$1",
+ "generators": [{"name": "movingai", "params": {"files": ["maps/a.map"], "queries": "scen"}},
+                {"name": "image", "params": {"files": ["maps/f.yaml"]}}]}
+JSON
+}
+files_config mr.json >mc.json
+ln maps/f.pgm hard.pgm
+sums() { md5sum maps/* hard.pgm; }
+before_maps=$(sums)
+refused "--out a map file" '--out "maps/a.map": is the map file' "$bin" run mc.json --out maps/a.map --quiet
+refused "--runs-out a .scen" '--runs-out "maps/a.map.scen": is the scenario file of .*a.map' \
+  "$bin" run mc.json --runs-out maps/a.map.scen --quiet
+refused "--out a YAML map's image, hard-linked" '--out "hard.pgm": is the occupancy image named by .*f.yaml' \
+  "$bin" run mc.json --out hard.pgm --quiet
+files_config maps/f.yaml >mv.json
+refused "validate: a report onto a YAML map" 'report "maps/f.yaml": is the map file' "$bin" validate mv.json
+refused "merge --out a map of its config" '--out "maps/a.map.scen": is the scenario file' \
+  "$bin" merge j.jsonl --config mc.json --out maps/a.map.scen
+refused "export --sqlite a map of its config" '--sqlite "hard.pgm": is the occupancy image' \
+  "$bin" export j.jsonl --config mc.json --sqlite hard.pgm
+[ "$before_maps" = "$(sums)" ] && ok "map files intact" || bad "a map file changed"
+"$bin" run mc.json --out mr.json --quiet && ok "the map config runs" || bad "the map config (exit $?)"
+
 cmp -s c.json c.orig && cmp -s j.jsonl j.orig && ok "config and journal intact" ||
   bad "config or journal changed"
 "$bin" run c.json --out r.json --resume ./j.jsonl --runs-out j.jsonl --quiet &&
@@ -135,6 +167,10 @@ sed '2s/"journal_version":1/"journal_version":2/' j.orig >v2.jsonl
 refused "resume refuses a foreign journal version" \
   'v2.jsonl:2: not a record .*journal_version 2; this agvbench reads tool "agvbench", journal_version 1' \
   "$bin" run c.json --out r4.json --resume v2.jsonl --quiet
+sed '3s/"path_length":/"path_len":/' j.orig >renamed.jsonl
+refused "resume refuses a record of an engine with other metric names" \
+  'renamed.jsonl:3: no metric "path_length": written by an agvbench that measures other metrics' \
+  "$bin" run c.json --out r6.json --resume renamed.jsonl --quiet
 sed '1s/,"tool":"agvbench"//; 1s/"journal_version":1,//' j.orig >v0.jsonl
 refused "merge refuses a record without a version" \
   'v0.jsonl:1: not a record .*tool \(none\), journal_version \(none\)' \
@@ -156,6 +192,46 @@ printf 'version 1\n0\t%s\t4\t4\t0\t0\t3\t3\t4.24264069\n' "$name" >m.scen
   $py -c 'import json; json.load(open("p.json", encoding="utf-8"))' &&
   ok "plan --json-out with a file name that is not UTF-8" ||
   bad "plan --json-out with a file name that is not UTF-8 ($(head -c 300 err.txt))"
+
+# Issue 28, class 7: a config, a map source's files and the folder they are in, with names that
+# are not UTF-8, run (the names written escaped), not end in the JSON library's exception.
+odd=$(printf 'd\xe9j\xe0')
+mkdir -p "$odd/maps"
+tiny_map >"$odd/maps/$(printf 'caf\xe9.map')"
+tiny_map >"$odd/maps/plain.map"
+cat >"$odd/$(printf 'c\xe9.json')" <<JSON
+{"name": "odd", "seed": 3, "maps_per_cell": 2, "planners": ["astar"], "report": "odd.json",
+ "generators": [{"name": "movingai", "params": {"files": ["maps/*.map"]}}],
+ "map": {"endpoints": "random", "min_distance": 1}}
+JSON
+"$bin" run "$odd/$(printf 'c\xe9.json')" --out odd.json --runs-out odd.jsonl --quiet 2>err.txt &&
+  $py -c '
+import json
+r = json.load(open("odd.json", encoding="utf-8"))
+cells = [c["cell"] for c in r["cells"]]
+assert cells == ["movingai/caf\ufffd.map", "movingai/plain.map"] and r["complete"], cells
+assert sum(1 for l in open("odd.jsonl", encoding="utf-8") if l.strip()) == 4' &&
+  ok "a config and map files named in bytes that are not UTF-8 run" ||
+  bad "names that are not UTF-8: $(head -c 300 err.txt)"
+"$bin" validate "$odd/$(printf 'c\xe9.json')" >/dev/null 2>err.txt && ok "... and validate" ||
+  bad "validate with names that are not UTF-8: $(head -c 300 err.txt)"
+
+# Issue 28, class 11: a NUL byte in a path the config gives cannot name the file meant, a file's
+# binary bytes are not echoed raw into a message.
+config 'nul\u0000.json' >nul.json
+refused 'a NUL byte in "report"' 'report "nul\\x00.json": holds a NUL byte' "$bin" run nul.json --quiet
+config r.json | sed 's#"report"#"runs": "nul\\u0000.jsonl", "report"#' >nul.json
+refused 'a NUL byte in "runs"' 'runs "nul\\x00.jsonl": holds a NUL byte' "$bin" run nul.json --quiet
+rm -f nul.json
+{ printf 'type octile\nheight \033[31m\377\376\001\n'; } >bin.map
+"$bin" plan --map bin.map --start 0,0 --goal 1,1 >out.txt 2>err.txt
+code=$?
+if [ $code -eq 2 ] && ! LC_ALL=C grep -q "$(printf '[\033\001\377]')" err.txt &&
+  grep -qF "height '\x1b[31m\xff\xfe\x01' is not a whole number" err.txt; then
+  ok "binary bytes of a map escaped in its message: $(head -c 160 err.txt)"
+else
+  bad "binary map: exit $code, $(od -c err.txt | head -5)"
+fi
 
 # A report temporary left by a killed writer is removed at the next write of that report.
 sh -c 'exit 0' & dead=$!

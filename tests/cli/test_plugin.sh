@@ -140,6 +140,48 @@ for r in t2 iso cli; do
     bad "$r.json differs: $($py "$same" t1.json $r.json)"
 done
 
+# A plugin library is a file the run reads (issue 28, class 1): no output replaces it, however
+# spelled (a hard link), and validate says so too.
+cp "$plugin" sweep/keep.so
+ln sweep/keep.so sweep/hard.so
+sed 's|"\.\./example-build/libgbfs_plugin.so"|"keep.so"|' sweep/config.json >sweep/keep.json
+for args in "run sweep/keep.json --out sweep/hard.so --quiet" \
+  "run sweep/keep.json --runs-out sweep/hard.so --quiet" \
+  "run sweep/no_plugins.json --plugin sweep/keep.so --out sweep/hard.so --quiet" \
+  "plan --plugin sweep/keep.so --planner gbfs --size 16 --json-out sweep/hard.so"; do
+  # shellcheck disable=SC2086
+  "$bin" $args >clash.txt 2>&1
+  code=$?
+  [ $code -eq 2 ] && grep -q 'sweep/hard.so": is the plugin library of gbfs_plugin' clash.txt &&
+    cmp -s "$plugin" sweep/keep.so && ok "$args: refused, library intact" ||
+    bad "$args: exit $code ($(head -c 200 clash.txt))"
+done
+sed 's|"report": *"[^"]*"|"report": "sweep/hard.so"|' sweep/keep.json >sweep/keep_report.json
+"$bin" validate sweep/keep_report.json >clash.txt 2>&1
+[ $? -eq 2 ] && grep -q 'report "sweep/hard.so": is the plugin library' clash.txt &&
+  ok "validate names a report onto the plugin library" || bad "validate: $(head -c 200 clash.txt)"
+
+# A plugin whose file name is not UTF-8 (issue 28, class 7) loads and its sweep's report is
+# written, the name escaped.
+odd_so="sweep/$(printf 'gbfs\xe9.so')"
+cp "$plugin" "$odd_so"
+"$bin" run sweep/no_plugins.json --plugin "$odd_so" --threads 2 --out odd.json --quiet 2>err.txt &&
+  $py -c '
+import json
+r = json.load(open("odd.json", encoding="utf-8"))
+(p,) = r["config"]["plugins"]
+assert p["path"].endswith("/gbfs\ufffd.so") and r["complete"], p' &&
+  ok "a plugin named in bytes that are not UTF-8 runs" || bad "odd plugin name: $(head -c 300 err.txt)"
+
+# export takes --plugin as run does (issue 28, class 8): the journal of a sweep that loaded the
+# plugin on the command line is exported with it; without it, the unknown planner says how.
+"$bin" run sweep/no_plugins.json --plugin "$plugin" --threads 2 --out ex.json --runs-out ex.jsonl \
+  --quiet && "$bin" export ex.jsonl --config sweep/no_plugins.json --plugin "$plugin" \
+  --sqlite ex.db >ex.txt 2>&1 && ok "export --plugin: $(cat ex.txt)" || bad "export --plugin: $(cat ex.txt)"
+"$bin" export ex.jsonl --config sweep/no_plugins.json --sqlite ex2.db >ex.txt 2>&1
+[ $? -eq 2 ] && grep -q 'unknown planner "gbfs".*loaded, with --plugin' ex.txt && [ ! -e ex2.db ] &&
+  ok "export without the plugin: exit 2, how to load it named" || bad "export without --plugin: $(cat ex.txt)"
+
 # A resume knows the plugin's content: a changed file is refused.
 cp "$plugin" sweep/copy.so
 sed 's|"\.\./example-build/libgbfs_plugin.so"|"copy.so"|' sweep/config.json >sweep/copy.json
@@ -208,6 +250,11 @@ class SpoiltAStar : public agv::Planner {
     if (mode == "nan_path" && r.path.size() >= 2) r.path[1] = {std::nan(""), std::nan("")};
     if (mode == "reserved_extra") r.extra.push_back({"path_length", 0.0});
     if (mode == "extra_twice") r.extra.insert(r.extra.end(), {{"mine", 1.0}, {"mine", 2.0}});
+    if (mode == "rule_out_of_range") {  // a "no path" whose rule the engine would index by
+      r = agv::PlanResult::failed(agv::Failure::no_path, "none");
+      r.rule = static_cast<agv::CornerRule>(7);
+    }
+    if (mode == "failure_out_of_range") r.failure = static_cast<agv::Failure>(42);
     return r;
   }
  private:
@@ -235,7 +282,8 @@ void add(void* out) {
     info.params.push_back(ParamSpec::choice("c", "z", {"a", "b"}, ""));
   if (mode == "counter_unknown") info.counters.push_back({"expansions", "nodes"});
   if (mode == "exit_in_plan") info.make = make_exit;
-  if (mode == "nan_path" || mode == "reserved_extra" || mode == "extra_twice") {
+  if (mode == "nan_path" || mode == "reserved_extra" || mode == "extra_twice" ||
+      mode == "rule_out_of_range" || mode == "failure_out_of_range") {
     g_astar_make = info.make;
     info.make = make_spoilt;
   }
@@ -378,7 +426,8 @@ assert by[("misbehave_astar", "crash")] == n and by[("astar", "success")] == n, 
 EOF_PY
 # What a planner returns is judged, whoever wrote it: a path with a NaN point is invalid, in a
 # sweep and in `scen`; an extra metric named as one the engine measures, or given twice, makes
-# the run a crash (nothing of it recorded), and the measured value stands.
+# the run a crash (nothing of it recorded), and the measured value stands; so does an outcome or
+# corner rule outside its enum.
 spoilt() {  # MODE: the exit.json sweep with misbehave_astar spoilt so
   AGV_MISBEHAVE=$1 "$bin" run sweep/exit.json --threads 2 --out "$1.json" --runs-out "$1.jsonl" \
     --quiet >out.txt 2>err.txt || echo "run exit $?" >>err.txt
@@ -398,6 +447,8 @@ EOF_PY
 judged nan_path invalid_path 'not finite|NaN|nan'
 judged reserved_extra crash 'extra metric "path_length" is a name the engine measures'
 judged extra_twice crash 'extra metric "mine" given twice'
+judged rule_out_of_range crash 'corner rule 7 is not one of'
+judged failure_out_of_range crash 'outcome \(failure\) 42 is not one of'
 AGV_MISBEHAVE=nan_path "$bin" scen --plugin "$m" --planner misbehave_astar \
   "$src/tests/data/movingai/random512-10-0.map" "$src/tests/data/movingai/random512-10-0.map.scen" \
   --json >scen.json 2>err.txt

@@ -2,6 +2,7 @@
 // sweep's size, duplicate keys and axis values, one default for an absent or empty object), and
 // command-line numbers are read strictly against the config's ranges.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include "engine/sweep_runner.h"
 #include "engine/sweep_size.h"
 #include "tests/engine/config_error.h"
+#include "tests/test_size.h"
 
 namespace agv {
 namespace {
@@ -75,10 +77,37 @@ TEST(ConfigValidation, SweepTooLargeForMemoryIsRefused) {
   json j = kSmall;
   j["sizes"] = sizes;
   j["maps_per_cell"] = 10000000;  // 10^10 map tasks: terabytes of slots
-  ASSERT_GT(usable_memory_bytes(), 0.0);
+  ASSERT_GT(usable_memory().bytes, 0.0);
   const std::string e = config_error(j);
   EXPECT_EQ(e.rfind("maps_per_cell: 10000000 maps in each of 1000 cells", 0), 0u) << e;
   EXPECT_NE(e.find("lower maps_per_cell"), std::string::npos) << e;
+
+  // An address-space limit (ulimit -v) is memory the sweep cannot have either: the estimate sees
+  // what it leaves above what is mapped already, instead of a bad_alloc mid-sweep. Not under a
+  // sanitizer, whose reserved address space such a limit would starve.
+  if (!test::kSanitized) {
+    struct rlimit saved {};
+    ASSERT_EQ(::getrlimit(RLIMIT_AS, &saved), 0);
+    std::ifstream statm("/proc/self/statm");
+    double pages = 0.0;
+    ASSERT_TRUE(statm >> pages);
+    const double mapped = pages * static_cast<double>(::sysconf(_SC_PAGE_SIZE));
+    constexpr double kRoom = 512.0 * 1024 * 1024;
+    if (saved.rlim_cur == RLIM_INFINITY || static_cast<double>(saved.rlim_cur) > mapped + kRoom) {
+      struct rlimit low = saved;
+      low.rlim_cur = static_cast<rlim_t>(mapped + kRoom);
+      ASSERT_EQ(::setrlimit(RLIMIT_AS, &low), 0);
+      const UsableMemory m = usable_memory();
+      json big = kSmall;
+      big["maps_per_cell"] = 2000000;  // 2 million slots: about a gigabyte, past half of kRoom
+      const std::string why = config_error(big);
+      ASSERT_EQ(::setrlimit(RLIMIT_AS, &saved), 0);
+      EXPECT_EQ(m.source, "the address-space limit (ulimit -v) leaves");
+      EXPECT_GT(m.bytes, kRoom / 2);
+      EXPECT_LE(m.bytes, kRoom);
+      EXPECT_NE(why.find("the address-space limit (ulimit -v) leaves"), std::string::npos) << why;
+    }
+  }
 
   // The estimate grows with what the engine holds: a slot per map task and planner.
   const SweepConfig small = parse_config(kSmall);

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <png.h>
 #include <stdlib.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -380,6 +382,9 @@ TEST(MapFiles, BadFilesAreRefusedByNameAndLine) {
   write_text(dir / "broken.yaml", "image: ok.pgm\nresolution: [0.1\n");
   e = load_error(with("image", {{"files", {"broken.yaml"}}}), dir.path());
   EXPECT_TRUE(contains(e, "broken.yaml:") && contains(e, "malformed YAML")) << e;
+  write_text(dir / "twice.yaml", "image: ok.pgm\nresolution: 0.1\nresolution: 0.2\n");
+  e = load_error(with("image", {{"files", {"twice.yaml"}}}), dir.path());
+  EXPECT_TRUE(contains(e, "twice.yaml:3: resolution: given twice (first at line 2)")) << e;
   write_text(dir / "nores.yaml", "image: ok.pgm\n");
   e = load_error(with("image", {{"files", {"nores.yaml"}}}), dir.path());
   EXPECT_TRUE(contains(e, "nores.yaml:1: resolution: missing")) << e;
@@ -396,6 +401,35 @@ TEST(MapFiles, BadFilesAreRefusedByNameAndLine) {
   write_text(dir / "corner.map", "type octile\nheight 2\nwidth 3\nmap\n..@\n...\n");
   e = load_error(with("movingai", {{"files", {"corner.map"}}}), dir.path());
   EXPECT_TRUE(contains(e, "corner.map: map.endpoints \"corners\": the goal corner (2, 0)")) << e;
+}
+
+// A small PNG that declares the largest image (8192x8192, about 400 MiB decoded) under an
+// address-space limit it does not fit: one line naming the file, not a bare bad_alloc. Not under a
+// sanitizer, whose reserved address space such a limit would starve.
+TEST(MapFiles, AnImageTooLargeToDecodeIsNamed) {
+  if (test::kSanitized) return;
+  TempDir dir;
+  const int side = kMaxMapSide;
+  write_png(dir / "huge.png", std::vector<unsigned char>(std::size_t(side) * side, 255), side,
+            side);
+  std::ifstream statm("/proc/self/statm");
+  double pages = 0.0;
+  ASSERT_TRUE(statm >> pages);
+  struct rlimit saved {};
+  ASSERT_EQ(::getrlimit(RLIMIT_AS, &saved), 0);
+  struct rlimit low = saved;
+  low.rlim_cur = static_cast<rlim_t>(pages * ::sysconf(_SC_PAGE_SIZE) + 128.0 * 1024 * 1024);
+  if (saved.rlim_cur != RLIM_INFINITY && saved.rlim_cur < low.rlim_cur) return;  // tighter already
+  ASSERT_EQ(::setrlimit(RLIMIT_AS, &low), 0);
+  std::string e;
+  try {
+    (void)read_occupancy_image(dir / "huge.png", 0.05);
+  } catch (const std::runtime_error& err) {
+    e = err.what();
+  }
+  ASSERT_EQ(::setrlimit(RLIMIT_AS, &saved), 0);
+  EXPECT_TRUE(contains(e, "huge.png: decoding the image needs more memory than this process can"))
+      << e;
 }
 
 // The config hash covers the files' contents: a changed map file is another sweep, and a config

@@ -21,6 +21,7 @@ import sys
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.append(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "reports"))
 from agvreports import stats  # noqa: E402
+from agvreports.runs import config_hash  # noqa: E402
 
 METRICS = ["path_length", "path_length_m", "waypoints", "turns", "turn_angle_rad",
            "smoothness_mean", "smoothness_max", "min_clearance", "motion_time_s",
@@ -244,6 +245,10 @@ def aggregate(spec, records):
 def make(spec, report_path, runs_path=None):
     records = simulate(spec)
     report = aggregate(spec, records)
+    # The records carry their report's config hash, as the engine's do: the scripts check it.
+    digest = config_hash(report["config"])
+    for r in records:
+        r["config_hash"] = digest
     with open(report_path, "w", encoding="utf-8") as f:
         json.dump(report, f, indent=1)
         f.write("\n")

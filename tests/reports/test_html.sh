@@ -55,8 +55,13 @@ expect2 "html_report.py will not overwrite a user's file" "refusing to overwrite
 # Pages.
 "$py" "$root/tests/reports/synth_many.py" "$work/many.json" "$work/many.jsonl" 24 || bad "synth_many.py"
 "$py" "$root/tests/reports/synth_many.py" "$work/other.json" "$work/other.jsonl" 3 || bad "synth_many.py 3"
-expect2 "html_report.py journal of another sweep" "planner 'planner_.*' is not in the report|cell .* is not in the report" \
+expect2 "html_report.py journal of another sweep" "a record of config '[0-9a-f]{16}', not of the report's" \
   "$py" "$html" "$tiny" "$work/a.html" --runs "$work/other.jsonl"
+# The same config name, cells and planners, another seed: still another sweep (issue 28, class 9).
+"$py" -c 'import json, sys; d = json.load(open(sys.argv[1])); d["config"]["seed"] += 1; json.dump(d, open(sys.argv[2], "w"))' \
+  "$work/many.json" "$work/many_seed.json"
+expect2 "html_report.py journal of the same config name, another seed" "a record of config '[0-9a-f]{16}', not of the report's" \
+  "$py" "$html" "$work/many_seed.json" "$work/a.html" --runs "$work/many.jsonl"
 if "$py" "$html" "$work/many.json" "$work/many.html" --runs "$work/many.jsonl" >"$work/out.txt" 2>"$work/err.txt"; then
   ok "html_report.py with --runs: $(cat "$work/out.txt")"
 else

@@ -75,7 +75,7 @@ expect2 "plot.py unknown format" "invalid choice: 'gif'" "$py" "$plot" "$tiny" "
 expect2 "plot.py violin without runs" "--dist violin needs --runs" "$py" "$plot" "$tiny" "$work/o1" --dist violin
 expect2 "plot.py missing journal" "nothere.jsonl: no such file" "$py" "$plot" "$tiny" "$work/o1" --runs "$work/nothere.jsonl"
 printf '{"tool": "agvbench", "journal_version": 1, "planner": "astar", "cell": "uniform/99x99/0.5", "map_index": 0, "outcome": "success", "metrics": {}}\n' >"$work/other.jsonl"
-expect2 "plot.py journal of another sweep" "line 1: cell 'uniform/99x99/0.5' is not in the report" "$py" "$plot" "$tiny" "$work/o1" --runs "$work/other.jsonl"
+expect2 "plot.py journal of another sweep" "line 1: a record of config None, not of the report's" "$py" "$plot" "$tiny" "$work/o1" --runs "$work/other.jsonl"
 printf '{"tool": "agvbench", "journal_version": 9}\n' >"$work/v9.jsonl"
 expect2 "plot.py journal of another version" "journal_version 9" "$py" "$plot" "$tiny" "$work/o1" --runs "$work/v9.jsonl"
 [ -e "$work/o1" ] && bad "plot.py created OUTDIR for a bad report" || ok "no OUTDIR for bad reports"

@@ -1,0 +1,19 @@
+#pragma once
+// Text from a file or a file name, made fit for a one-line message: a malformed map can be any
+// bytes, and echoing them raw puts control codes and broken UTF-8 on the user's terminal.
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace agv {
+
+// `text` with every byte that is not printable ASCII or part of a well-formed UTF-8 character
+// (control codes, DEL, stray or truncated sequences, overlong forms) written as \xNN, cut after
+// `max_bytes` of the input with "... (N more bytes)".
+std::string printable(std::string_view text, std::size_t max_bytes = 80);
+
+// A file name quoted whole (PATH_MAX), its odd bytes escaped.
+inline constexpr std::size_t kPathBytes = 4096;
+
+}  // namespace agv

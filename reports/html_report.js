@@ -6,12 +6,23 @@
   const SYMBOL = {o: "circle", s: "square", "^": "triangle-up", D: "diamond", v: "triangle-down",
     P: "cross", X: "x", "*": "star", "<": "triangle-left", ">": "triangle-right", h: "hexagon",
     p: "pentagon", d: "diamond-tall", H: "hexagon2", "8": "octagon"};
-  const PLANNER = {};
+  // Keyed by labels, which are any text: "__proto__" or "constructor" must be a key like another.
+  const PLANNER = Object.create(null);
   D.planners.forEach(function (p) { PLANNER[p.label] = p; });
   const CONFIG = {displaylogo: false, responsive: true};
   const state = {world: 0, density: "all", metric: D.metrics[0],
                  planners: D.planners.map(function (p) { return p.label; })};
 
+  // A cell's entry of a planner (its own property only, whatever the label).
+  function own(obj, key) {
+    return obj && Object.prototype.hasOwnProperty.call(obj, key) ? obj[key] : undefined;
+  }
+  // Text for plotly (trace names, titles, hover templates): plotly reads <b>, <br>, entities,
+  // %{...} templates and $...$ TeX in it; a label is shown as written, its line breaks as <br>.
+  function plotlyText(s) {
+    return String(s).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;")
+      .replace(/\$/g, "&#36;").replace(/%/g, "&#37;").replace(/\r\n|\r|\n/g, "<br>");
+  }
   function el(tag, attrs, text) {
     const e = document.createElement(tag);
     Object.keys(attrs || {}).forEach(function (k) { e.setAttribute(k, attrs[k]); });
@@ -62,17 +73,22 @@
     if (h.has("density")) state.density = h.get("density");
     if (h.has("metric") && D.metrics.indexOf(h.get("metric")) >= 0) state.metric = h.get("metric");
     if (h.has("planners")) {
-      const want = h.get("planners").split(",");
+      const want = h.get("planners").split(",").map(decodeLabel);
       state.planners = D.planners.map(function (p) { return p.label; })
         .filter(function (l) { return want.indexOf(l) >= 0; });
     }
+  }
+  function decodeLabel(s) {
+    try { return decodeURIComponent(s); } catch (e) { return s; }  // a hand-written "%"
   }
   function writeHash() {
     const h = new URLSearchParams();
     h.set("world", world().title);
     h.set("density", state.density);
     h.set("metric", state.metric);
-    if (state.planners.length !== D.planners.length) h.set("planners", state.planners.join(","));
+    if (state.planners.length !== D.planners.length) {  // each label encoded: its commas stay its own
+      h.set("planners", state.planners.map(encodeURIComponent).join(","));
+    }
     history.replaceState(null, "", "#" + h.toString());
   }
 
@@ -163,19 +179,20 @@
     const traces = [], all = [];
     chosen().forEach(function (label) {
       const p = PLANNER[label];
-      const base = {type: "box", name: label, legendgroup: label, marker: {color: p.colour, symbol: symbol(label), size: 4},
-        line: {color: p.colour, width: 1.5}, fillcolor: p.colour + "55", boxmean: true};
+      const base = {type: "box", name: plotlyText(label), legendgroup: label, marker: {color: p.colour, symbol: symbol(label), size: 4},
+        line: {color: p.colour, width: 1.5}, fillcolor: p.colour + "55", boxmean: true,
+        hoverlabel: {namelength: -1}};
       if (runs) {
         const x = [], y = [];
         cells().forEach(function (c) {
-          const vals = ((c.runs || {})[label] || {})[m] || [];
+          const vals = own(own(c.runs, label), m) || [];
           vals.forEach(function (v) { x.push(dtext(c.density)); y.push(v); all.push(v); });
         });
         if (y.length) traces.push(Object.assign(base, {x: x, y: y, boxpoints: "outliers"}));
       } else {
         const x = [], q1 = [], med = [], q3 = [], lo = [], hi = [], mean = [];
         cells().forEach(function (c) {
-          const s = ((c.planners[label] || {}).m || {})[m];
+          const s = own((own(c.planners, label) || {}).m, m);
           if (!s || s.median === null || s.p5 === null) return;
           x.push(dtext(c.density)); q1.push(s.p5); med.push(s.median); q3.push(s.p95);
           lo.push(s.min); hi.push(s.max); mean.push(s.mean);
@@ -200,7 +217,7 @@
       const p = PLANNER[label];
       const x = [], y = [], up = [], down = [], text = [];
       cells().forEach(function (c) {
-        const s = c.planners[label];
+        const s = own(c.planners, label);
         if (!s || !s.runs) return;
         const r = 100 * s.successes / s.runs;
         x.push(dtext(c.density)); y.push(r);
@@ -209,9 +226,9 @@
         const f = Object.keys(s.failures).map(function (k) { return k + " " + s.failures[k]; }).join(", ");
         text.push(s.successes + " / " + s.runs + (f ? " (" + f + ")" : ""));
       });
-      if (x.length) traces.push({type: "bar", name: label, x: x, y: y, marker: {color: p.colour},
+      if (x.length) traces.push({type: "bar", name: plotlyText(label), x: x, y: y, marker: {color: p.colour},
         error_y: {type: "data", array: up, arrayminus: down, visible: true, color: "#333", thickness: 1},
-        text: text, hovertemplate: label + "<br>density %{x}: %{y:.1f}%<br>%{text}<extra></extra>", textposition: "none"});
+        text: text, hovertemplate: plotlyText(label) + "<br>density %{x}: %{y:.1f}%<br>%{text}<extra></extra>", textposition: "none"});
     });
     return plot("success-chart", traces, layout("success (% of runs)", {barmode: "group",
       yaxis: {title: {text: "success (% of runs)"}, range: [0, 102]}}));
@@ -226,7 +243,7 @@
       const p = PLANNER[label];
       const x = [], y = [], up = [], down = [], text = [];
       cells().forEach(function (c, i) {
-        const comp = ((c.paired[label] || {})[m]);
+        const comp = own(own(c.paired, label), m);
         if (!comp || comp.gm === null) return;
         x.push(i - width / 2 + width * (k + 0.5) / n); y.push(comp.gm);
         up.push(comp.ci95[1] === null ? 0 : Math.max(0, comp.ci95[1] - comp.gm));
@@ -236,12 +253,12 @@
           fmtP(comp.p) + "<br>" + comp.pairs + " pairs: " + comp.wins + " better, " + comp.ties + " ties, " +
           comp.losses + " worse (" + comp.better + " is better)");
       });
-      if (x.length) traces.push({type: "scatter", mode: "markers", name: label, x: x, y: y,
+      if (x.length) traces.push({type: "scatter", mode: "markers", name: plotlyText(label), x: x, y: y,
         marker: {color: p.colour, symbol: symbol(label), size: 9},
         error_y: {type: "data", array: up, arrayminus: down, visible: true, color: p.colour, thickness: 1.2},
-        text: text, hovertemplate: label + " / " + D.baseline + "<br>%{text}<extra></extra>"});
+        text: text, hovertemplate: plotlyText(label) + " / " + plotlyText(D.baseline) + "<br>%{text}<extra></extra>"});
     });
-    const lay = layout("ratio to " + D.baseline, {
+    const lay = layout("ratio to " + plotlyText(D.baseline), {
       xaxis: {title: {text: "obstacle density"}, tickvals: ds.map(function (_, i) { return i; }),
               ticktext: ds.map(dtext), range: [-0.6, ds.length - 0.4], zeroline: false},
       shapes: [{type: "line", xref: "paper", x0: 0, x1: 1, y0: 1, y1: 1, line: {dash: "dash", color: "#333"}}]});
@@ -267,8 +284,8 @@
       const tr = el("tr");
       tr.appendChild(el("td", {}, label + (label === D.baseline ? " (baseline)" : "")));
       cells().forEach(function (c) {
-        const s = ((c.planners[label] || {}).m || {})[m];
-        const comp = (c.paired[label] || {})[m];
+        const s = own((own(c.planners, label) || {}).m, m);
+        const comp = own(own(c.paired, label), m);
         let text = s ? fmt(s.mean) + (s.ci95[0] !== null ? " [" + fmt(s.ci95[0]) + ", " + fmt(s.ci95[1]) + "]" : "") : "\u2013";
         if (comp && comp.gm !== null) text += "; \u00d7" + fmt(comp.gm) + " (" + fmtP(comp.p) + ")";
         const td = el("td", comp && comp.p !== null && comp.p < 0.05 ? {class: "sig"} : {}, text);

@@ -59,6 +59,8 @@ def setup_matplotlib(prog="plot.py"):
         "axes.spines.top": False, "axes.spines.right": False, "axes.axisbelow": True,
         "figure.facecolor": "white", "savefig.facecolor": "white",
         "svg.fonttype": "none", "pdf.fonttype": 42, "svg.hashsalt": "agvbench",
+        # Labels are the user's text, shown as written: "$\alpha$" or "x_1^2" is no mathtext.
+        "text.parse_math": False,
     })
     return plt
 

@@ -135,10 +135,17 @@ def plotly_and_app(js_plotly, js_app, compress):
             "<script>", loader, "</script>"]
 
 
+def script_json(data):
+    """`data` as JSON to embed in a <script> element whatever its strings hold (a planner label
+    may be "</script>" or "<!--<script>", which would end the element early or keep it from
+    ending): no '<', '>' or '&' in the text, each written as a JSON escape instead."""
+    text = json.dumps(data, separators=(",", ":"), allow_nan=False)
+    return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")
+
+
 def build_page(data, js_app, js_plotly, title, compress=True):
     esc = lambda s: (s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;"))
-    # "</" must not end the script elements early; JSON is otherwise valid JavaScript.
-    blob = json.dumps(data, separators=(",", ":"), allow_nan=False).replace("</", "<\\/")
+    blob = script_json(data)
     with open(os.path.join(ASSETS, "html_report.css"), encoding="utf-8") as f:
         css = f.read()
     return "\n".join([

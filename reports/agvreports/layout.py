@@ -38,9 +38,21 @@ def side_legend(fig, style, labels, title=None, line=True, names=None):
     shown = [ax for ax in fig.axes if ax.get_visible()]
     right = max(ax.get_tightbbox(renderer).transformed(to_fig).x1 for ax in shown)
     top = max(ax.get_position().y1 for ax in shown)
-    return fig.legend(handles=handles, loc="upper left", bbox_to_anchor=(right + 0.01, top),
-                      bbox_transform=fig.transFigure, ncol=ncol, frameon=False, title=title,
-                      borderaxespad=0.0, handlelength=2.6)
+    return literal_legend(fig, handles, loc="upper left", bbox_to_anchor=(right + 0.01, top),
+                          bbox_transform=fig.transFigure, ncol=ncol, frameon=False, title=title,
+                          borderaxespad=0.0, handlelength=2.6)
+
+
+def literal_legend(owner, handles, **kw):
+    """owner.legend (a figure's or an axes') with every handle's label as it is: matplotlib
+    leaves a label starting with '_' out of a legend, so such an entry is made under a stand-in
+    and given its text back."""
+    texts = [h.get_label() for h in handles]
+    legend = owner.legend(handles=handles, labels=[" " + t if t.startswith("_") else t for t in texts],
+                          **kw)
+    for entry, text in zip(legend.get_texts(), texts):
+        entry.set_text(text)
+    return legend
 
 
 def note_below_legend(fig, legend, text):

@@ -7,6 +7,7 @@ import math
 import os
 import sys
 
+from agvreports.layout import literal_legend
 from agvreports.numeric import finite
 
 PALETTE = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#17becf",
@@ -39,6 +40,8 @@ def draw(plan, out_path, dpi, title, small=False):
                          "`apt-get install python3-matplotlib`\n")
         return 1
     matplotlib.use("Agg")
+    # Planner labels and messages are the user's text, shown as written, not read as mathtext.
+    matplotlib.rcParams["text.parse_math"] = False
     import matplotlib.pyplot as plt
     from matplotlib.colors import ListedColormap
     from matplotlib.lines import Line2D
@@ -146,8 +149,8 @@ def draw(plan, out_path, dpi, title, small=False):
         density = sum(sum(r) for r in occ) / (w * h)
         title += f"  ({density * 100:.0f}% obstacles)"
     ax.set_title(title, fontsize=11, fontweight="bold")
-    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False, fontsize=8.5,
-              borderaxespad=0.0)
+    literal_legend(ax, handles, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False, fontsize=8.5,
+                   borderaxespad=0.0)
     parent = os.path.dirname(os.path.abspath(out_path))
     try:
         os.makedirs(parent, exist_ok=True)

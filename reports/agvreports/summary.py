@@ -9,6 +9,7 @@ import os
 import statistics
 
 from agvreports.grouping import density_text
+from agvreports.markdown_text import code, plain
 from agvreports.metrics import TIME, metric_title, metric_unit
 from agvreports.numeric import finite
 from agvreports.stats import Moments, moments_from_summary, wilson
@@ -94,12 +95,12 @@ def overview(rep):
     base = rep.baseline
     out = ["## Overview\n",
            f"Pooled over all {len(rep.doc['cells'])} cells. Success: all runs, Wilson 95% interval. "
-           f"Ratios to `{base}`: geometric mean of the per-map ratios over every pair of every cell "
+           f"Ratios to {code(base)}: geometric mean of the per-map ratios over every pair of every cell "
            "(path length: maps where both succeeded; planning time: maps both ran) with its 95% "
            "interval; *p<0.05*: cells whose Wilcoxon signed-rank test (two-sided) gives p < 0.05, "
            "of the cells compared. Plan time: the median of the cells' medians and their range.\n"]
-    cols = ["planner", "runs", "success % [95%]", f"path length / {base} [95%]", "p<0.05",
-            "plan time median \u00b5s (cells' range)", f"plan time / {base} [95%]", "p<0.05"]
+    cols = ["planner", "runs", "success % [95%]", f"path length / {plain(base)} [95%]", "p<0.05",
+            "plan time median \u00b5s (cells' range)", f"plan time / {plain(base)} [95%]", "p<0.05"]
     out += header(cols)
     for label in rep.labels:
         runs = succ = 0
@@ -130,7 +131,7 @@ def overview(rep):
                     else:
                         lcells += 1; lsig += sig
         is_base = label == base
-        name = f"`{label}`" + (" (baseline)" if is_base else "")
+        name = code(label, in_table=True) + (" (baseline)" if is_base else "")
         med = (f"{fmt(statistics.median(medians))} ({fmt(min(medians))}{DASH}{fmt(max(medians))})"
                if medians else DASH)
         out.append(row([name, str(runs), success_text(succ, runs),
@@ -152,7 +153,7 @@ def column_title(m):
 
 def world_tables(rep, key):
     cells = rep.worlds[key]
-    out = [f"## {rep.world_title(key)}\n"]
+    out = [f"## {plain(rep.world_title(key))}\n"]
     avail = rep.metric_names()
     metrics = avail if rep.metric_filter else [m for m in RESULT_METRICS if m in avail]
     show_time = rep.has_time() and rep.wanted(TIME)
@@ -170,8 +171,8 @@ def world_tables(rep, key):
             succ = success_text(p["successes"], p.get("runs") or 0, p.get("success_ci95"))
             fails = p.get("failures") or {}
             if fails:
-                succ += " (" + ", ".join(f"{k} {v}" for k, v in fails.items()) + ")"
-            r = [density_text(d), f"`{label}`", succ]
+                succ += " (" + ", ".join(f"{plain(k)} {v}" for k, v in fails.items()) + ")"
+            r = [density_text(d), code(label, in_table=True), succ]
             r += [fmt((p["metrics"].get(m) or {}).get("mean")) for m in metrics]
             if show_time:
                 t = rep.summary_of(p, TIME)
@@ -188,8 +189,8 @@ def world_tables(rep, key):
         names = [n for n in PAIRED_METRICS if n in names]
     others = rep.paired_planners(cells)
     if names and others:
-        out.append(f"Paired against `{rep.baseline}` on the same maps: geometric mean of planner / "
-                   f"`{rep.baseline}` (below 1: smaller) and the Wilcoxon signed-rank p-value; "
+        out.append(f"Paired against {code(rep.baseline)} on the same maps: geometric mean of planner / "
+                   f"{code(rep.baseline)} (below 1: smaller) and the Wilcoxon signed-rank p-value; "
                    "pairs = maps where both succeeded.\n")
         cols = ["density", "planner", "pairs"] + [metric_title(n) for n in names]
         out += header(cols)
@@ -201,7 +202,7 @@ def world_tables(rep, key):
                 first = rep.comparison_of(c, names[0]) or {}
                 pairs = next((str(rep.comparison_of(c, n).get("pairs")) for n in names
                               if n != TIME and rep.comparison_of(c, n)), str(first.get("pairs", DASH)))
-                r = [density_text(d), f"`{label}`", pairs]
+                r = [density_text(d), code(label, in_table=True), pairs]
                 for n in names:
                     comp = rep.comparison_of(c, n)
                     if not comp or not finite(comp.get("geo_mean_ratio")):
@@ -218,7 +219,7 @@ def write_summary(rep, outdir, pictures):
     env = doc.get("environment", {}) if isinstance(doc.get("environment"), dict) else {}
     timing = doc.get("timing", {}) if isinstance(doc.get("timing"), dict) else {}
     totals = doc.get("totals", {}) if isinstance(doc.get("totals"), dict) else {}
-    out = [f"# Sweep summary: {cfg.get('name', '(unnamed)')}\n"]
+    out = [f"# Sweep summary: {plain(cfg.get('name', '(unnamed)'))}\n"]
     if doc.get("complete") is False:
         out.append("> **Incomplete report**: the sweep was interrupted; cells hold fewer runs "
                    "than configured.\n")
@@ -227,7 +228,7 @@ def write_summary(rep, outdir, pictures):
     out.append(f"- seed {cfg.get('seed', '?')}, {cfg.get('maps_per_cell', '?')} maps per cell, "
                f"{totals.get('cells', len(doc['cells']))} cells, {totals.get('maps', '?')} maps, "
                f"{totals.get('runs', '?')} runs")
-    out.append(f"- planners: {', '.join(rep.labels)}; baseline `{rep.baseline}`")
+    out.append(f"- planners: {', '.join(plain(l) for l in rep.labels)}; baseline {code(rep.baseline)}")
     if env:
         extra = ""
         if env.get("date_utc") or env.get("date"):

@@ -7,11 +7,13 @@ import os
 from agvreports.claims.claims_file import SETUPS, SETUPS_KEYS
 from agvreports.claims.show import DASH, show_interval, show_range
 from agvreports.claims.verdict import LEVELS
+from agvreports.markdown_text import code, plain
 
 
 def md(text):
-    """Escape what Markdown would read as emphasis or table syntax (A* is common here)."""
-    return str(text).replace("\\", "\\\\").replace("*", "\\*").replace("_", "\\_").replace("|", "\\|")
+    """Text for Markdown, table cells included, shown as it is (A* is common here; a reason can
+    quote a report's planner labels). Every '_' escaped, as CLAIMS.md always had it."""
+    return plain(text, every_underscore=True)
 
 
 def compact_cells(cells):
@@ -43,12 +45,12 @@ def markdown(results, sources, claims_path):
         elif ends == "random":
             ends += f" (min_distance {mp.get('min_distance', 0):g})"
         gens = ", ".join(g.get("name", "?") if isinstance(g, dict) else str(g) for g in cfg.get("generators", []))
-        line = (f"- `{s.path}`: sweep `{s.name}`, seed {cfg.get('seed', '?')}, {gens}, "
+        line = (f"- {code(s.path)}: sweep {code(s.name)}, seed {cfg.get('seed', '?')}, {gens}, "
                 f"{cfg.get('maps_per_cell', '?')} maps per cell, {totals.get('cells', len(s.doc['cells']))} cells, "
                 f"cell edge {mp.get('cell_edge', 1):g} m, endpoints {ends}, "
-                f"planners {', '.join(p['label'] for p in s.planners)}; baseline `{s.baseline}`")
+                f"planners {', '.join(plain(p['label']) for p in s.planners)}; baseline {code(s.baseline)}")
         if s.runs is not None:
-            line += f"; per-run records `{s.runs_path}`"
+            line += f"; per-run records {code(s.runs_path)}"
         if s.doc.get("complete") is False:
             line += " **(incomplete sweep)**"
         out.append(line)
@@ -73,16 +75,18 @@ def markdown(results, sources, claims_path):
         rule += "---|---|"
     out += [head, rule]
     for r in results:
-        row = (f"| `{r['id']}` ({r['paper']}, {md(r['where'])}) | {md(r['claim'])} | {md(r['comparison'])}"
+        row = (f"| {code(r['id'], in_table=True)} ({md(r['paper'])}, {md(r['where'])}) | {md(r['claim'])} | {md(r['comparison'])}"
                + (f"; {md(r['measures'])}" if r.get("measures") else "") + f" | {md(r['paper_figure'])}"
                + (f" **Note:** {md(r['note'])}" if r.get("note") else "") + " |")
         for k, _ in SETUPS:
             x = r[k + "_setup"]
-            row += f" `{x['config']}`: {x['measured']}; {x['range']} | **{x['verdict']}**: {md(x['why'])} |"
+            # An ordering's figures are named by its steps, which name planners.
+            row += (f" {code(x['config'], in_table=True)}: {plain(x['measured'])}; {plain(x['range'])} | "
+                    f"**{x['verdict']}**: {md(x['why'])} |")
         out.append(row.replace("\n", " "))
     out += ["", "## Details", ""]
     for r in results:
-        out.append(f"### `{r['id']}`: {r['paper_setup']['verdict']} on the paper's set-up, "
+        out.append(f"### {code(r['id'])}: {r['paper_setup']['verdict']} on the paper's set-up, "
                    f"{r['random_setup']['verdict']} on random maps")
         out.append("")
         out.append(f"- comparison: {md(r['comparison'])}")
@@ -94,12 +98,12 @@ def markdown(results, sources, claims_path):
             out.append(f"- note: {md(r['note'])}")
         for k, title in SETUPS:
             x = r[k + "_setup"]
-            out.append(f"- {title} (`{x['config']}`): **{x['verdict']}**: {md(x['why'])}")
+            out.append(f"- {title} ({code(x['config'])}): **{x['verdict']}**: {md(x['why'])}")
             if x.get("steps"):
                 for st in x["steps"]:
                     res = st["result"]
-                    out.append(f"  - step {st['step']}: {show_interval(res)}, per-map 5-95% {show_range(res)}, "
-                               f"{res['pairs']} pairs, {st['verdict']}; method: {res['method'] or DASH}")
+                    out.append(f"  - step {plain(st['step'])}: {show_interval(res)}, per-map 5-95% {show_range(res)}, "
+                               f"{res['pairs']} pairs, {st['verdict']}; method: {md(res['method'] or DASH)}")
             elif x.get("result") is not None and x["result"]["estimate"] is not None:
                 res = x["result"]
                 out.append(f"  - measured {show_interval(res)} over {res['pairs']} pairs ({res['n']} used"
@@ -107,7 +111,7 @@ def markdown(results, sources, claims_path):
                            + f") from {res['maps']} maps; per-map 5-95% {show_range(res)} over {res['range_n']} maps")
                 if res["wins"] is not None:
                     out.append(f"  - wins / ties / losses (candidate smaller = win): {res['wins']} / {res['ties']} / {res['losses']}")
-                out.append(f"  - method: {res['method'] or DASH}; cells: {compact_cells(res['cells'])}")
+                out.append(f"  - method: {md(res['method'] or DASH)}; cells: {compact_cells(res['cells'])}")
         out.append("")
     return "\n".join(out).rstrip() + "\n"
 

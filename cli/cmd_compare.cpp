@@ -59,9 +59,16 @@ int command_compare(const CompareCommand& cmd) {
       read_run_times(j, report_config_hash(before), times_before);
     for (const auto& j : cmd.runs_after) read_run_times(j, report_config_hash(after), times_after);
   }
-  const ReportComparison c =
-      compare_reports(before, after, with_runs ? &times_before : nullptr,
-                      with_runs ? &times_after : nullptr, cmd.fail_on_regression_pct);
+  // A shape the checks of require_report do not cover is still bad input naming both files.
+  const ReportComparison c = [&] {
+    try {
+      return compare_reports(before, after, with_runs ? &times_before : nullptr,
+                             with_runs ? &times_after : nullptr, cmd.fail_on_regression_pct);
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError("BEFORE \"" + cmd.before + "\" or AFTER \"" + cmd.after +
+                       "\": a report of an unexpected shape (" + e.what() + ")");
+    }
+  }();
   if (cmd.json) {
     nlohmann::json doc = comparison_json(c);
     doc["before"] = cmd.before;

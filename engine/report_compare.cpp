@@ -12,6 +12,7 @@
 #include "core/input_error.h"
 #include "core/json_text.h"
 #include "core/rng.h"
+#include "core/str_cat.h"
 #include "core/text_file.h"
 #include "engine/report.h"
 #include "engine/run_record.h"
@@ -24,6 +25,34 @@ namespace {
 
 std::string label_of(const json& entry) { return entry.value("planner", std::string()); }
 
+// The parts of a report the comparison walks, each of the type it reads: a hand-edited or damaged
+// report is InputError naming its field, not the JSON library's type_error after half the work.
+void require_shape(const json& r, const std::string& name) {
+  const auto fail = [&name](const std::string& field, const char* want) {
+    throw InputError(name + ": " + field + ": expected " + want + " (a damaged report?)");
+  };
+  if (!r.at("config").is_object()) fail("config", "an object");
+  const json& planners = r["config"].value("planners", json::array());
+  if (!planners.is_array()) fail("config.planners", "a list");
+  for (std::size_t i = 0; i < planners.size(); ++i)
+    if (!planners[i].is_object()) fail(str_cat("config.planners[", i, "]"), "an object");
+  if (!r.at("cells").is_array()) fail("cells", "a list");
+  for (std::size_t i = 0; i < r["cells"].size(); ++i) {
+    const json& cell = r["cells"][i];
+    const std::string at = str_cat("cells[", i, "]");
+    if (!cell.is_object()) fail(at, "an object");
+    if (!cell.value("cell", json()).is_string()) fail(at + ".cell", "a string");
+    if (!cell.value("planners", json()).is_array()) fail(at + ".planners", "a list");
+    for (std::size_t k = 0; k < cell["planners"].size(); ++k) {
+      const json& p = cell["planners"][k];
+      const std::string pk = str_cat(at, ".planners[", k, "]");
+      if (!p.is_object()) fail(pk, "an object");
+      if (!p.value("planner", json()).is_string()) fail(pk + ".planner", "a string");
+      if (p.contains("timing") && !p["timing"].is_object()) fail(pk + ".timing", "an object");
+    }
+  }
+}
+
 // A report this build can read, or InputError naming `name`.
 void require_report(const json& r, const std::string& name) {
   if (!r.is_object() || r.value("tool", json()) != "agvbench" || !r.contains("config") ||
@@ -34,6 +63,7 @@ void require_report(const json& r, const std::string& name) {
     throw InputError(name + ": report schema_version " + json_text(version) +
                      "; this agvbench reads " + std::to_string(kReportSchemaVersion) +
                      " (re-run the sweep)");
+  require_shape(r, name);
 }
 
 // The config without what `compare` lets differ: the planners' parameters (and what they

@@ -154,6 +154,7 @@ class Database {
   // read_only: for the check before a sweep, which must not create the file.
   Database(const std::string& path, const std::string& option, bool read_only = false)
       : path_(path), option_(option) {
+    const int wait_ms = busy_wait_ms();  // first: a bad setting must not leave a handle open
     const int flags = read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
     if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
       const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
@@ -161,7 +162,7 @@ class Database {
       db_ = nullptr;
       throw InputError(option + " \"" + path + "\": cannot be opened: " + message);
     }
-    sqlite3_busy_timeout(db_, busy_wait_ms());  // another writer's transaction: wait, then fail
+    sqlite3_busy_timeout(db_, wait_ms);  // another writer's transaction: wait, then fail
   }
   ~Database() { sqlite3_close(db_); }
   Database(const Database&) = delete;

@@ -27,6 +27,18 @@ def _need(obj, key, where, types=None):
     return value
 
 
+def _check_timing(entry, where):
+    """An optional "timing" is an object of objects (SUMMARY or COMPARISON per time): a damaged
+    report is refused here, naming the field, not by an AttributeError while drawing."""
+    if "timing" not in entry or entry["timing"] is None:
+        return
+    if not isinstance(entry["timing"], dict):
+        raise ReportError(f"{where}.timing: expected an object, got {json.dumps(entry['timing'])}")
+    for name, v in entry["timing"].items():
+        if not isinstance(v, dict):
+            raise ReportError(f"{where}.timing.{name}: expected an object, got {json.dumps(v)}")
+
+
 def _is_number(v):
     return isinstance(v, (int, float)) and not isinstance(v, bool)
 
@@ -83,12 +95,14 @@ def check_report(doc):
                 if not isinstance(s, dict) or "mean" not in s or "ci95" not in s:
                     raise ReportError(f"{pw}.metrics.{name}: expected a SUMMARY object with "
                                       "'mean' and 'ci95'")
+            _check_timing(p, pw)
         paired = _need(cell, "paired", w, list)
         for j, c in enumerate(paired):
             cw = f"{w}.paired[{j}]"
             _need(c, "planner", cw, str)
             _need(c, "baseline", cw, str)
             metrics = _need(c, "metrics", cw, dict)
+            _check_timing(c, cw)
             for name, comp in metrics.items():
                 if not isinstance(comp, dict) or "geo_mean_ratio" not in comp or "pairs" not in comp:
                     raise ReportError(f"{cw}.metrics.{name}: expected a COMPARISON object with "

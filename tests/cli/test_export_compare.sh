@@ -101,17 +101,21 @@ expect_exit "export of a journal of another config: exit 2" 2 "$bin" export quic
 cp small.db locked.db
 cp small.db locked.orig
 coproc LOCK { sqlite3 -batch locked.db; }
-echo "BEGIN EXCLUSIVE; SELECT 'held';" >&"${LOCK[1]}"
-read -r held <&"${LOCK[0]}"  # the lock is taken once sqlite3 answers
+# Copies of the coprocess's pipes and pid: bash unsets LOCK and LOCK_PID once it has ended.
+lock_pid=$LOCK_PID
+exec {lock_in}>&"${LOCK[1]}" {lock_out}<&"${LOCK[0]}"
+echo "BEGIN EXCLUSIVE; SELECT 'held';" >&"$lock_in"
+read -r held <&"$lock_out"  # the lock is taken once sqlite3 answers
 expect_exit "export into a locked database: exit 1 (held: $held)" 1 \
   env AGVBENCH_SQLITE_WAIT_MS=300 "$bin" export tiny1.jsonl --config tiny.json --sqlite locked.db
 check "... named as locked by another connection" grep -q -- '--sqlite "locked.db": is locked by another connection, still after 0.3 s' last.err
 expect_exit "run --db into a locked database: exit 1" 1 \
   env AGVBENCH_SQLITE_WAIT_MS=300 "$bin" run tiny.json --out locked.report --db locked.db --quiet
 check "... named as locked" grep -q -- '--db "locked.db": is locked by another connection' last.err
-echo "COMMIT;" >&"${LOCK[1]}"
-exec {LOCK[1]}>&-
-wait "$LOCK_PID"
+echo "COMMIT;" >&"$lock_in"
+exec {lock_in}>&- {lock_out}<&-
+eval "exec ${LOCK[1]:-$lock_in}>&-" 2>/dev/null  # the coprocess's own write end, if still open
+wait "$lock_pid" 2>/dev/null
 check "... and left as it was" cmp locked.db locked.orig
 expect_exit "a bad AGVBENCH_SQLITE_WAIT_MS: exit 2" 2 \
   env AGVBENCH_SQLITE_WAIT_MS=soon "$bin" export tiny1.jsonl --config tiny.json --sqlite locked.db
@@ -170,6 +174,10 @@ expect_exit "compare of configs that differ beyond planner parameters: exit 2" 2
 check "... saying what differs" grep -q "seed 3 -> 4" last.err
 expect_exit "compare a journal as a report: exit 2" 2 "$bin" compare tiny1.json tiny1.jsonl
 expect_exit "compare a missing file: exit 2" 2 "$bin" compare tiny1.json missing.json
+# A damaged report (a field of another type): exit 2 naming the field, not the JSON library's error.
+$py -c 'import json, sys; d = json.load(open(sys.argv[1])); d["cells"][0]["cell"] = 1; json.dump(d, open(sys.argv[2], "w"))' tiny2.json odd_cell.json
+expect_exit "compare a report whose cell name is a number: exit 2" 2 "$bin" compare tiny1.json odd_cell.json --runs-before tiny1.jsonl --runs-after tiny2.jsonl
+check "... naming the field" grep -q 'AFTER: cells\[0\].cell: expected a string' last.err
 expect_exit "--runs-before without --runs-after: exit 2" 2 "$bin" compare tiny1.json tiny2.json --runs-before tiny1.jsonl
 expect_exit "journals swapped with another config's: exit 2" 2 "$bin" compare tiny1.json tiny2.json --runs-before quick.jsonl --runs-after tiny2.jsonl
 expect_exit "--fail-on-regression -5: exit 2" 2 "$bin" compare tiny1.json tiny2.json --fail-on-regression -5

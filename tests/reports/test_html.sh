@@ -47,6 +47,8 @@ printf '{ not json' >"$work/notjson.json"
 echo "my notes" >"$work/notes.html"
 expect2 "html_report.py not JSON" "not valid JSON" "$py" "$html" "$work/notjson.json" "$work/a.html"
 expect2 "html_report.py unknown planner" "no planner 'nope'" "$py" "$html" "$tiny" "$work/a.html" --planners astar,nope
+"$py" -c 'import json, sys; d = json.load(open(sys.argv[1])); d["cells"][0]["planners"][0]["timing"] = 5; json.dump(d, open(sys.argv[2], "w"))' "$tiny" "$work/badtiming.json"
+expect2 "html_report.py damaged timing" "cells\[0\].planners\[0\].timing: expected an object, got 5" "$py" "$html" "$work/badtiming.json" "$work/a.html"
 expect2 "html_report.py missing journal" "no such file" "$py" "$html" "$tiny" "$work/a.html" --runs "$work/missing.jsonl"
 [ -e "$work/a.html" ] && bad "html_report.py wrote a page for bad input" || ok "no page for bad input"
 expect2 "html_report.py will not overwrite a user's file" "refusing to overwrite" "$py" "$html" "$tiny" "$work/notes.html"

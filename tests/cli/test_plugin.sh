@@ -191,13 +191,21 @@ printf 'x' >>sweep/copy.so
 [ $? -ne 0 ] && ok "resume refused after the plugin file changed ($(head -c 150 resume.txt))" ||
   bad "resume accepted a changed plugin"
 
-# Broken plugins, built from one source with a different definition each.
+# Broken plugins, built from one source: the ones that differ in a symbol (no entry point, an
+# unresolved one) by a definition each, the ones that differ in what they declare (ABI, version,
+# plugin and planner names) in one library reading them from the environment (AGV_BAD_*), so
+# that each of those cases costs a process, not a compile.
 mkdir -p bad
 cat >bad/bad.cpp <<'EOF_CPP'
+#include <cstdlib>
 #include <memory>
 #include <vector>
 #include "agvbench/algos/plugin.h"
 #include "agvbench/algos/search/astar.h"
+const char* env_or(const char* key, const char* fallback) {
+  const char* v = std::getenv(key);
+  return v != nullptr && *v != '\0' ? v : fallback;
+}
 #ifdef UNRESOLVED
 void agvbench_test_no_such_function();
 #endif
@@ -207,14 +215,16 @@ void add(void* out) {
   agvbench_test_no_such_function();
 #endif
   agv::PlannerInfo info = agv::astar_planner();  // the built-in A*'s entry, renamed
-  info.name = PLANNER_NAME;
+  info.name = env_or("AGV_BAD_PLANNER", PLANNER_NAME);
   static_cast<std::vector<agv::PlannerInfo>*>(out)->push_back(std::move(info));
 }
 }  // namespace
 #ifndef NO_ENTRY
 extern "C" AGVBENCH_PLUGIN_EXPORT const AgvPlugin* agvbench_plugin_v1(void) {
   static const AgvPlugin plugin = {
-      {ABI, VERSION, AGVBENCH_PLUGIN_TOOLCHAIN, __VERSION__}, PLUGIN_NAME, "0.1", add};
+      {std::atoi(env_or("AGV_BAD_ABI", AGVBENCH_PLUGIN_STR(AGVBENCH_PLUGIN_ABI))),
+       env_or("AGV_BAD_VERSION", AGVBENCH_VERSION), AGVBENCH_PLUGIN_TOOLCHAIN, __VERSION__},
+      env_or("AGV_BAD_PLUGIN", PLUGIN_NAME), "0.1", add};
   return &plugin;
 }
 #else
@@ -306,15 +316,11 @@ function(bad_plugin name)
   target_link_libraries(${name} PRIVATE agvbench::plugin)
   target_compile_definitions(${name} PRIVATE ${ARGN})
 endfunction()
-set(ok_build ABI=AGVBENCH_PLUGIN_ABI VERSION=AGVBENCH_VERSION)
-bad_plugin(good_astar2 ${ok_build} PLUGIN_NAME="astar2_plugin" PLANNER_NAME="astar2")
-bad_plugin(old_version ABI=AGVBENCH_PLUGIN_ABI VERSION="0.0.1-old" PLUGIN_NAME="old_version" PLANNER_NAME="old_astar")
-bad_plugin(other_abi ABI=99 VERSION=AGVBENCH_VERSION PLUGIN_NAME="other_abi" PLANNER_NAME="abi_astar")
-bad_plugin(no_entry ${ok_build} NO_ENTRY PLUGIN_NAME="no_entry" PLANNER_NAME="x")
-bad_plugin(unresolved ${ok_build} UNRESOLVED PLUGIN_NAME="unresolved" PLANNER_NAME="u_astar")
-bad_plugin(builtin_clash ${ok_build} PLUGIN_NAME="builtin_clash" PLANNER_NAME="astar")
-bad_plugin(plugin_clash ${ok_build} PLUGIN_NAME="plugin_clash" PLANNER_NAME="gbfs")
-bad_plugin(name_clash ${ok_build} PLUGIN_NAME="gbfs_plugin" PLANNER_NAME="other_gbfs")
+# identity: well-formed unless AGV_BAD_ABI, AGV_BAD_VERSION, AGV_BAD_PLUGIN or AGV_BAD_PLANNER
+# say otherwise.
+bad_plugin(identity PLUGIN_NAME="astar2_plugin" PLANNER_NAME="astar2")
+bad_plugin(no_entry NO_ENTRY PLUGIN_NAME="no_entry" PLANNER_NAME="x")
+bad_plugin(unresolved UNRESOLVED PLUGIN_NAME="unresolved" PLANNER_NAME="u_astar")
 add_library(misbehave MODULE misbehave.cpp)
 target_link_libraries(misbehave PRIVATE agvbench::plugin)
 # A program of one's own on the installed static libraries (no plugin): the imported targets
@@ -350,10 +356,10 @@ import sys
 outcome, cells, checks, config_hash = open(sys.argv[1]).read().split()
 assert outcome == "none" and int(cells) > 9 and int(checks) > 0 and len(config_hash) == 16
 EOF_PY
-"$bin" list --plugin "$b/libgood_astar2.so" --json | grep -q '"astar2"' &&
+"$bin" list --plugin "$b/libidentity.so" --json | grep -q '"astar2"' &&
   ok "a second well-formed plugin (astar under another name) loads" || bad "good_astar2"
 echo "not a library" >notlib.so
-expect_refusal() {  # WHAT PATTERN ARGS...: exit 2 and stderr matching PATTERN
+expect_refusal() {  # WHAT PATTERN ARGS...: exit 2 and stderr matching PATTERN (AGV_BAD_* as set)
   local what=$1 pattern=$2
   shift 2
   "$bin" list "$@" >out.txt 2>err.txt
@@ -364,27 +370,28 @@ expect_refusal() {  # WHAT PATTERN ARGS...: exit 2 and stderr matching PATTERN
     bad "$what: exit $rc, $(cat err.txt)"
   fi
 }
-expect_refusal "another agvbench version" 'libold_version\.so.*built against agvbench 0\.0\.1-old' \
-  --plugin "$b/libold_version.so"
-expect_refusal "another plugin ABI" 'libother_abi\.so.*plugin ABI 99' --plugin "$b/libother_abi.so"
+AGV_BAD_VERSION=0.0.1-old expect_refusal "another agvbench version" \
+  'libidentity\.so.*built against agvbench 0\.0\.1-old' --plugin "$b/libidentity.so"
+AGV_BAD_ABI=99 expect_refusal "another plugin ABI" 'libidentity\.so.*plugin ABI 99' \
+  --plugin "$b/libidentity.so"
 expect_refusal "no entry point" 'libno_entry\.so.*no entry point agvbench_plugin_v1' \
   --plugin "$b/libno_entry.so"
 expect_refusal "unresolved symbol" 'libunresolved\.so.*agvbench_test_no_such_function' \
   --plugin "$b/libunresolved.so"
-expect_refusal "planner name of a built-in" 'libbuiltin_clash\.so.*"astar" clashes with the built-in' \
-  --plugin "$b/libbuiltin_clash.so"
-expect_refusal "planner name of another plugin" \
-  'libplugin_clash\.so.*"gbfs" clashes with plugin "gbfs_plugin"' \
-  --plugin "$plugin" --plugin "$b/libplugin_clash.so"
-expect_refusal "plugin name of another plugin" 'libname_clash\.so.*"gbfs_plugin" is taken' \
-  --plugin "$plugin" --plugin "$b/libname_clash.so"
+AGV_BAD_PLANNER=astar expect_refusal "planner name of a built-in" \
+  'libidentity\.so.*"astar" clashes with the built-in' --plugin "$b/libidentity.so"
+AGV_BAD_PLANNER=gbfs expect_refusal "planner name of another plugin" \
+  'libidentity\.so.*"gbfs" clashes with plugin "gbfs_plugin"' \
+  --plugin "$plugin" --plugin "$b/libidentity.so"
+AGV_BAD_PLUGIN=gbfs_plugin AGV_BAD_PLANNER=other_gbfs expect_refusal "plugin name of another plugin" \
+  'libidentity\.so.*"gbfs_plugin" is taken' --plugin "$plugin" --plugin "$b/libidentity.so"
 expect_refusal "not a library" 'notlib\.so.*not a shared library' --plugin notlib.so
 expect_refusal "no such file" 'missing\.so' --plugin missing.so
 # The same refusal from a config's "plugins", before anything is written.
-sed 's|"\.\./example-build/libgbfs_plugin.so"|"../bad-build/libold_version.so"|' sweep/config.json \
+sed 's|"\.\./example-build/libgbfs_plugin.so"|"../bad-build/libidentity.so"|' sweep/config.json \
   >sweep/bad.json
-"$bin" run sweep/bad.json --out bad_report.json --quiet 2>err.txt
-[ $? -eq 2 ] && grep -q 'plugins\[0\].*libold_version' err.txt && [ ! -e bad_report.json ] &&
+AGV_BAD_VERSION=0.0.1-old "$bin" run sweep/bad.json --out bad_report.json --quiet 2>err.txt
+[ $? -eq 2 ] && grep -q 'plugins\[0\].*libidentity.*0\.0\.1-old' err.txt && [ ! -e bad_report.json ] &&
   ok "config \"plugins\" with a bad plugin: exit 2, nothing written" || bad "config bad plugin: $(cat err.txt)"
 # Misbehaving plugins (issue 28, classes 5 and 6): each refused when it loads, exit 2 and one line
 # naming the plugin and what is wrong, or, for a planner that calls exit() mid-run, exit 1 with a
@@ -458,9 +465,9 @@ doc = json.load(open(sys.argv[1]))
 assert doc["failures"] > 0 and doc["mismatches"] >= doc["failures"], doc
 EOF_PY
 # A truncated copy of a good library: refused before the loader maps it (it would die of SIGBUS).
-size=$(stat -c %s "$b/libgood_astar2.so")
-head -c $((size * 2 / 3)) "$b/libgood_astar2.so" >trunc.so
+size=$(stat -c %s "$b/libidentity.so")
+head -c $((size * 2 / 3)) "$b/libidentity.so" >trunc.so
 expect_refusal "truncated library" 'trunc\.so.*truncated or damaged shared library' --plugin trunc.so
-head -c 40 "$b/libgood_astar2.so" >short.so
+head -c 40 "$b/libidentity.so" >short.so
 expect_refusal "library shorter than its ELF header" 'short\.so.*shorter than an ELF header' --plugin short.so
 finish test_plugin

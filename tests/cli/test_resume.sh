@@ -11,10 +11,10 @@ source "$(dirname "$0")/lib.sh"
 
 cat >config.json <<'JSON'
 {"name": "resume-test", "seed": 11, "generators": ["uniform", "rooms"], "sizes": [48, 96],
- "densities": [0.1, 0.3], "maps_per_cell": 150, "planners": ["astar", "dijkstra"],
+ "densities": [0.1, 0.3], "maps_per_cell": 75, "planners": ["astar", "dijkstra"],
  "report": "unused.json"}
 JSON
-total=$((2 * 2 * 2 * 150 * 2))
+total=$((2 * 2 * 2 * 75 * 2))
 
 cat >journal_ok.py <<'EOF_PY'
 import json, sys

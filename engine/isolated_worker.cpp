@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "core/json_text.h"
+#include "core/printable.h"
 #include "engine/config_loader.h"
 #include "engine/map_task.h"
 
@@ -357,8 +358,12 @@ int worker_main(std::int64_t memory_mb) {
   MapTaskWorkspace workspace;
   try {
     const auto first = nlohmann::json::parse(line);
-    // A map source's files are relative to the config's folder, which the parent names.
-    config = parse_config(first.at("config"), first.value("base_dir", std::string(".")));
+    // A map source's files are relative to the config's folder, which the parent names (in hex
+    // when it is not UTF-8).
+    const std::string base_dir = first.contains("base_dir_hex")
+                                     ? from_hex(first.at("base_dir_hex").get<std::string>())
+                                     : first.value("base_dir", std::string("."));
+    config = parse_config(first.at("config"), base_dir);
     workspace.planners = configure_planners(config);
   } catch (const std::exception& e) {
     channel.send({{"fatal", e.what()}});

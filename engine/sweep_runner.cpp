@@ -14,6 +14,7 @@
 
 #include "core/input_error.h"
 #include "core/json_text.h"
+#include "core/printable.h"
 #include "engine/journal.h"
 #include "engine/map_task.h"
 
@@ -66,8 +67,10 @@ WorkerLaunch worker_launch(const SweepConfig& config, const IsolationOptions& is
   WorkerLaunch launch;
   launch.command = iso.command;
   if (launch.command.empty()) launch.command = {"/proc/self/exe", "worker"};
-  launch.config_line =
-      json_text(nlohmann::json{{"config", config_as_run(config)}, {"base_dir", config.base_dir}});
+  nlohmann::json first = {{"config", config_as_run(config)}, {"base_dir", config.base_dir}};
+  // A folder named in bytes that are not UTF-8 would reach the worker as U+FFFD: sent as hex.
+  if (!is_utf8(config.base_dir)) first["base_dir_hex"] = to_hex(config.base_dir);
+  launch.config_line = json_text(first);
   launch.hard_limit_s = iso.hard_limit_s > 0 ? iso.hard_limit_s : 2.0 * config.time_limit_s + 1.0;
   return launch;
 }

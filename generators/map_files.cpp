@@ -14,6 +14,7 @@
 #include "core/input_error.h"
 #include "core/json_reader.h"
 #include "core/json_text.h"
+#include "core/printable.h"
 #include "core/str_cat.h"
 #include "core/text_file.h"
 #include "generators/occupancy_image.h"
@@ -42,11 +43,13 @@ std::vector<std::string> cell_names(const std::vector<std::string>& matched,
   const std::string prefix = base_dir.empty() ? "" : base_dir + "/";
   for (const auto& m : matched) {
     const std::string file = std::filesystem::path(m).filename().string();
-    if (count[file] == 1) {
-      names.push_back(file);
-    } else {
-      names.push_back(m.rfind(prefix, 0) == 0 ? m.substr(prefix.size()) : m);
-    }
+    // A name is a cell key in reports, journals and the worker protocol, all JSON: bytes that are
+    // not UTF-8 are written \xNN (core/printable.h), the same on every side, so a record of the
+    // cell names it as the sweep does (U+FFFD would not round-trip).
+    const std::string name = count[file] == 1                ? file
+                             : m.rfind(prefix, 0) == 0 ? m.substr(prefix.size())
+                                                       : m;
+    names.push_back(printable(name, kPathBytes));
   }
   return names;
 }

@@ -7,6 +7,7 @@
 # Usage: test_files.sh AGVBENCH_BINARY
 set -u
 bin=$1
+src_dir=$(cd "$(dirname "$0")/../.." && pwd)
 source "$(dirname "$0")/lib.sh"
 
 config() {  # a small valid config; $1 = report path, $2 = maps per cell
@@ -194,7 +195,8 @@ printf 'version 1\n0\t%s\t4\t4\t0\t0\t3\t3\t4.24264069\n' "$name" >m.scen
   bad "plan --json-out with a file name that is not UTF-8 ($(head -c 300 err.txt))"
 
 # Issue 28, class 7: a config, a map source's files and the folder they are in, with names that
-# are not UTF-8, run (the names written escaped), not end in the JSON library's exception.
+# are not UTF-8, run (a cell named after such a file says \xNN for the odd bytes), in process and
+# under --isolate alike, and resume; never the JSON library's exception.
 odd=$(printf 'd\xe9j\xe0')
 mkdir -p "$odd/maps"
 tiny_map >"$odd/maps/$(printf 'caf\xe9.map')"
@@ -209,10 +211,19 @@ JSON
 import json
 r = json.load(open("odd.json", encoding="utf-8"))
 cells = [c["cell"] for c in r["cells"]]
-assert cells == ["movingai/caf\ufffd.map", "movingai/plain.map"] and r["complete"], cells
+assert cells == ["movingai/caf\\xe9.map", "movingai/plain.map"] and r["complete"], cells
 assert sum(1 for l in open("odd.jsonl", encoding="utf-8") if l.strip()) == 4' &&
   ok "a config and map files named in bytes that are not UTF-8 run" ||
   bad "names that are not UTF-8: $(head -c 300 err.txt)"
+"$bin" run "$odd/$(printf 'c\xe9.json')" "${isolate[@]}" --out odd_iso.json --quiet 2>err.txt &&
+  $py "$src_dir/slurm/same_report.py" odd.json odd_iso.json >/dev/null &&
+  ok "... and under --isolate, the same report" ||
+  bad "--isolate with names that are not UTF-8: $(head -c 300 err.txt)"
+head -n 2 odd.jsonl >odd_part.jsonl
+"$bin" run "$odd/$(printf 'c\xe9.json')" --out odd_resumed.json --resume odd_part.jsonl --quiet 2>err.txt &&
+  $py "$src_dir/slurm/same_report.py" odd.json odd_resumed.json >/dev/null &&
+  ok "... and a resume of its journal completes to the same report" ||
+  bad "resume with names that are not UTF-8: $(head -c 300 err.txt)"
 "$bin" validate "$odd/$(printf 'c\xe9.json')" >/dev/null 2>err.txt && ok "... and validate" ||
   bad "validate with names that are not UTF-8: $(head -c 300 err.txt)"
 

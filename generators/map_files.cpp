@@ -46,7 +46,7 @@ std::vector<std::string> cell_names(const std::vector<std::string>& matched,
     // A name is a cell key in reports, journals and the worker protocol, all JSON: bytes that are
     // not UTF-8 are written \xNN (core/printable.h), the same on every side, so a record of the
     // cell names it as the sweep does (U+FFFD would not round-trip).
-    const std::string name = count[file] == 1                ? file
+    const std::string name = count[file] == 1          ? file
                              : m.rfind(prefix, 0) == 0 ? m.substr(prefix.size())
                                                        : m;
     names.push_back(printable(name, kPathBytes));

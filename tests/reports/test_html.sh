@@ -12,12 +12,7 @@
 set -u
 root=${1:?usage: test_html.sh REPO_ROOT}
 py=/usr/bin/python3
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-pass=0
-fail=0
-ok() { echo "ok   $1"; pass=$((pass + 1)); }
-bad() { echo "FAIL $1"; fail=$((fail + 1)); }
+source "$(dirname "$0")/lib.sh"
 
 if ! command -v chromium >/dev/null || ! "$py" -c 'import plotly' 2>/dev/null; then
   "$root/scripts/apt_need.sh" chromium python3-plotly >/dev/null 2>&1 || true
@@ -169,5 +164,4 @@ rendered $p_tiny tiny 3
 grep -q '<option value="1" selected="">blocks 16×16\|<option value="3" selected="">blocks 32×32' "$work/tiny.dom" \
   && ok "tiny: the URL's cell group chosen" || bad "tiny: the URL's cell group was not chosen"
 
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish

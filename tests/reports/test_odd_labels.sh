@@ -24,12 +24,7 @@
 set -u
 root=${1:?usage: test_odd_labels.sh REPO_ROOT}
 py=/usr/bin/python3
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-pass=0
-fail=0
-ok() { echo "ok   $1"; pass=$((pass + 1)); }
-bad() { echo "FAIL $1"; fail=$((fail + 1)); }
+source "$(dirname "$0")/lib.sh"
 
 if [ ! -x "$py" ] || ! "$py" -c 'import matplotlib' 2>/dev/null; then
   echo "SKIP: $py cannot import matplotlib (apt-get install python3-matplotlib)"
@@ -401,5 +396,4 @@ if [ -n "$chromium_pid" ]; then
   fi
 fi
 
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish

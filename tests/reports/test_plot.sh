@@ -14,12 +14,7 @@
 set -u
 root=${1:?usage: test_plot.sh REPO_ROOT}
 py=${AGV_PYTHON:-/usr/bin/python3}  # override only to test the skip path
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-pass=0
-fail=0
-ok() { echo "ok   $1"; pass=$((pass + 1)); }
-bad() { echo "FAIL $1"; fail=$((fail + 1)); }
+source "$(dirname "$0")/lib.sh"
 
 if [ ! -x "$py" ]; then
   echo "SKIP: $py not found (the report scripts run with Debian's python3)"
@@ -271,5 +266,4 @@ else
   bad "plot_paths.py on tiny_plan.json: $(cat "$work/paths.err")"
 fi
 
-echo "$pass passed, $fail failed"
-[ $fail -eq 0 ]
+finish

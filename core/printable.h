@@ -1,6 +1,7 @@
 #pragma once
-// Text from a file or a file name, made fit for a one-line message: a malformed map can be any
-// bytes, and echoing them raw puts control codes and broken UTF-8 on the user's terminal.
+// Bytes from a file or a file name where text is expected: made fit for a one-line message (a
+// malformed map can be any bytes, and echoing them raw puts control codes and broken UTF-8 on the
+// user's terminal), and carried through JSON, which holds UTF-8 only (hex).
 
 #include <cstddef>
 #include <string>

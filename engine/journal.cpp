@@ -155,8 +155,9 @@ RunSlot RecordRestorer::slot_of_record(const json& rec, const std::string& where
     if (!metrics.contains(name))
       throw InputError(where + ": no metric \"" + std::string(name) +
                        "\": written by an agvbench that measures other metrics than this one "
-                       "(which writes path_length, ..., every one, null when undefined); start a "
-                       "new journal");
+                       "(which writes each of its " +
+                       std::to_string(kRunMetricNames.size()) +
+                       " on every record, null when undefined); start a new journal");
   for (const auto& [name, value] : metrics.items()) {
     bool known = false;
     for (std::size_t i = 0; i < kRunMetricNames.size(); ++i) {

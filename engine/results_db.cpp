@@ -153,8 +153,7 @@ class Database {
  public:
   // read_only: for the check before a sweep, which must not create the file.
   Database(const std::string& path, const std::string& option, bool read_only = false)
-      : path_(path), option_(option) {
-    const int wait_ms = busy_wait_ms();  // first: a bad setting must not leave a handle open
+      : path_(path), option_(option), wait_ms_(busy_wait_ms()) {  // first: no handle left open
     const int flags = read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
     if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
       const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
@@ -162,7 +161,7 @@ class Database {
       db_ = nullptr;
       throw InputError(option + " \"" + path + "\": cannot be opened: " + message);
     }
-    sqlite3_busy_timeout(db_, wait_ms);  // another writer's transaction: wait, then fail
+    sqlite3_busy_timeout(db_, wait_ms_);  // another writer's transaction: wait, then fail
   }
   ~Database() { sqlite3_close(db_); }
   Database(const Database&) = delete;
@@ -183,7 +182,7 @@ class Database {
                        "); left as it is");
     if (code == SQLITE_BUSY || code == SQLITE_LOCKED) {
       char waited[32];
-      std::snprintf(waited, sizeof waited, "%g", busy_wait_ms() / 1000.0);
+      std::snprintf(waited, sizeof waited, "%g", wait_ms_ / 1000.0);
       throw std::runtime_error(named() + ": is locked by another connection, still after " +
                                waited + " s of waiting (" + sqlite + "; " + doing +
                                "); run again once it is done");
@@ -199,6 +198,7 @@ class Database {
  private:
   std::string path_;
   std::string option_;
+  int wait_ms_;  // how long SQLite waits for another connection (AGVBENCH_SQLITE_WAIT_MS)
   sqlite3* db_ = nullptr;
 };
 

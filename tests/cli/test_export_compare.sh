@@ -52,6 +52,15 @@ assert steps >= set(range(1, 21)), sorted(steps)
 assert "\r" not in open("quick.err").read()
 ' "$quick_runs"
 lines=$(wc -l <quick.jsonl)
+# The report scripts recompute the hash the records carry (reports/agvreports/runs.py): the same
+# as the engine's on a real sweep, floats and planner parameters included.
+check "the report scripts' config hash is the engine's" $py -c "
+import json, sys
+sys.dont_write_bytecode = True
+sys.path.insert(0, sys.argv[1] + '/reports')
+from agvreports.runs import config_hash
+want = json.loads(open(sys.argv[3]).readline())['config_hash']
+sys.exit(0 if config_hash(json.load(open(sys.argv[2]))['config']) == want else 1)" "$src" quick.json quick.jsonl
 check "export the quick journal" "$bin" export quick.jsonl --config "$cfg" --sqlite results.db
 check "select count(*) from runs = the journal's line count ($lines)" test "$(q 'select count(*) from runs')" = "$lines"
 check "one experiment, its config hash, date and environment" test "$(q "select count(*) from experiments where name = 'quick' and length(config_hash) = 16 and created_utc like '____-__-__T__:__:__Z' and json_extract(environment_json, '\$.load_average') is not null")" = 1

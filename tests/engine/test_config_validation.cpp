@@ -2,7 +2,6 @@
 // sweep's size, duplicate keys and axis values, one default for an absent or empty object), and
 // command-line numbers are read strictly against the config's ranges.
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -16,6 +15,7 @@
 #include "engine/sweep_plan.h"
 #include "engine/sweep_runner.h"
 #include "engine/sweep_size.h"
+#include "tests/address_space_limit.h"
 #include "tests/engine/config_error.h"
 #include "tests/test_size.h"
 
@@ -86,22 +86,20 @@ TEST(ConfigValidation, SweepTooLargeForMemoryIsRefused) {
   // what it leaves above what is mapped already, instead of a bad_alloc mid-sweep. Not under a
   // sanitizer, whose reserved address space such a limit would starve.
   if (!test::kSanitized) {
-    struct rlimit saved {};
-    ASSERT_EQ(::getrlimit(RLIMIT_AS, &saved), 0);
-    std::ifstream statm("/proc/self/statm");
-    double pages = 0.0;
-    ASSERT_TRUE(statm >> pages);
-    const double mapped = pages * static_cast<double>(::sysconf(_SC_PAGE_SIZE));
     constexpr double kRoom = 512.0 * 1024 * 1024;
-    if (saved.rlim_cur == RLIM_INFINITY || static_cast<double>(saved.rlim_cur) > mapped + kRoom) {
-      struct rlimit low = saved;
-      low.rlim_cur = static_cast<rlim_t>(mapped + kRoom);
-      ASSERT_EQ(::setrlimit(RLIMIT_AS, &low), 0);
-      const UsableMemory m = usable_memory();
-      json big = kSmall;
-      big["maps_per_cell"] = 2000000;  // 2 million slots: about a gigabyte, past half of kRoom
-      const std::string why = config_error(big);
-      ASSERT_EQ(::setrlimit(RLIMIT_AS, &saved), 0);
+    UsableMemory m;
+    std::string why;
+    {
+      const test::AddressSpaceLimit limit(kRoom);
+      ASSERT_FALSE(limit.failed());
+      if (limit.active()) {
+        m = usable_memory();
+        json big = kSmall;
+        big["maps_per_cell"] = 2000000;  // 2 million slots: about a gigabyte, past half of kRoom
+        why = config_error(big);
+      }
+    }
+    if (!m.source.empty()) {
       EXPECT_EQ(m.source, "the address-space limit (ulimit -v) leaves");
       EXPECT_GT(m.bytes, kRoom / 2);
       EXPECT_LE(m.bytes, kRoom);

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/cell_blocks.h"
 #include "core/distance_transform.h"
 #include "core/summed_area.h"
 
@@ -12,6 +13,8 @@ struct Grid::Companions {
   std::unique_ptr<DistanceTransform> dt;
   std::once_flag sat_once;
   std::unique_ptr<SummedAreaTable> sat;
+  std::once_flag blocks_once;
+  std::unique_ptr<CellBlocks> blocks;
 };
 
 Grid::Grid() : companions_(std::make_unique<Companions>()) {
@@ -92,6 +95,12 @@ const SummedAreaTable& Grid::summed_area() const {
   std::call_once(companions_->sat_once,
                  [this] { companions_->sat = std::make_unique<SummedAreaTable>(*this); });
   return *companions_->sat;
+}
+
+const CellBlocks& Grid::cell_blocks() const {
+  std::call_once(companions_->blocks_once,
+                 [this] { companions_->blocks = std::make_unique<CellBlocks>(*this); });
+  return *companions_->blocks;
 }
 
 bool Grid::same_cells(const Grid& other) const {

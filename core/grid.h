@@ -35,6 +35,7 @@ inline Point centre(Cell c) { return {c.x + 0.5, c.y + 0.5}; }
 
 class DistanceTransform;
 class SummedAreaTable;
+class CellBlocks;
 
 class Grid {
  public:
@@ -88,6 +89,7 @@ class Grid {
   // Built on first use, then shared read-only by every planner of this map (thread-safe).
   const DistanceTransform& distance_transform() const;
   const SummedAreaTable& summed_area() const;
+  const CellBlocks& cell_blocks() const;
 
   // Same size, edge and obstacles.
   bool same_cells(const Grid& other) const;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/cell_blocks.h"
 #include "core/line_of_sight.h"
 #include "core/numbers.h"
 
@@ -39,6 +40,47 @@ inline double capped_static_sq(const std::uint8_t* occ, int stride, int width, i
   d = std::min(d, c[stride - 1] ? fx2 + gy2 : 1.0);
   d = std::min(d, c[stride + 1] ? gx2 + gy2 : 1.0);
   return c[0] ? 0.0 : d;
+}
+
+// capped_static_sq() at every rollout point, in two passes so that the second vectorises: each
+// point's cell and the occupancy mask of its 3x3 block (core/cell_blocks.h, one load), then the
+// distances of every point at once, without the per-neighbour branches the compiler makes of the
+// scalar form. The arithmetic is the scalar form's, term for term: the same values bit for bit.
+void capped_static_sq_all(const Grid& grid, DwaScratch& s) {
+  const std::uint32_t* blocks = grid.cell_blocks().masks();
+  const int stride = grid.stride(), width = grid.width(), height = grid.height();
+  const auto n = static_cast<int>(s.px.size());
+  const double *px = s.px.data(), *py = s.py.data();
+  double *frac_x = s.frac_x.data(), *frac_y = s.frac_y.data();
+  std::uint32_t* block = s.block.data();
+  for (int i = 0; i < n; ++i) {
+    // A point outside the grid (or NaN) reads the corner ring cell at index 0: blocked, so 0.
+    const bool inside = (px[i] >= 0.0) & (py[i] >= 0.0) & (px[i] <= width) & (py[i] <= height);
+    const double x = inside ? px[i] : -1.0, y = inside ? py[i] : -1.0;
+    const int cx = std::min(static_cast<int>(x), width);  // x == width lies on the border ring
+    const int cy = std::min(static_cast<int>(y), height);
+    frac_x[i] = x - cx;
+    frac_y[i] = y - cy;
+    block[i] = static_cast<std::uint32_t>((cy + 1) * stride + (cx + 1));
+  }
+  // The gather on its own: GCC vectorises the loops around it only without it.
+  for (int i = 0; i < n; ++i) block[i] = blocks[block[i]];
+  for (int i = 0; i < n; ++i) {
+    const std::uint32_t m = s.block[i];
+    const double fx = s.frac_x[i], fy = s.frac_y[i];
+    const double gx = 1.0 - fx, gy = 1.0 - fy;
+    const double fx2 = fx * fx, fy2 = fy * fy, gx2 = gx * gx, gy2 = gy * gy;
+    double d = 1.0;
+    d = std::min(d, m & kBlockLeft ? fx2 : 1.0);
+    d = std::min(d, m & kBlockRight ? gx2 : 1.0);
+    d = std::min(d, m & kBlockUp ? fy2 : 1.0);
+    d = std::min(d, m & kBlockDown ? gy2 : 1.0);
+    d = std::min(d, m & kBlockUpLeft ? fx2 + fy2 : 1.0);
+    d = std::min(d, m & kBlockUpRight ? gx2 + fy2 : 1.0);
+    d = std::min(d, m & kBlockDownLeft ? fx2 + gy2 : 1.0);
+    d = std::min(d, m & kBlockDownRight ? gx2 + gy2 : 1.0);
+    s.step_static[i] = m & kBlockCentre ? 0.0 : d;
+  }
 }
 
 // Samples n points over [lo, hi], endpoints included (one point: the middle).
@@ -141,19 +183,34 @@ VelocityWindow capped_window(const DwaParams& p, double v, double w, const DwaTa
 
 // Step 2: the n_v x n_w pairs on a regular grid over the window (scratch sized for them).
 void sample_pairs(const VelocityWindow& win, const StepShape& shape, DwaScratch& s) {
-  for (auto* a :
-       {&s.v,         &s.w,          &s.px,        &s.py,          &s.ux,         &s.uy,
-        &s.chord,     &s.rot_c,      &s.rot_s,     &s.step_static, &s.step_other, &s.min_static,
-        &s.min_other, &s.hit_static, &s.hit_other, &s.goal_index,  &s.heading,    &s.velocity,
-        &s.dist,      &s.dist_dyna,  &s.score,     &s.smoothed})
+  for (auto* a : {&s.v,          &s.w,          &s.px,        &s.py,         &s.ux,
+                  &s.uy,         &s.chord,      &s.rot_c,     &s.rot_s,      &s.step_static,
+                  &s.step_other, &s.min_static, &s.min_other, &s.hit_static, &s.hit_other,
+                  &s.goal_index, &s.heading,    &s.velocity,  &s.dist,       &s.dist_dyna,
+                  &s.score,      &s.smoothed,   &s.turn_sinc, &s.frac_x,     &s.frac_y})
     a->resize(shape.n);
   s.admissible.resize(shape.n);
+  s.block.resize(shape.n);
   const int nv = shape.nv, nw = shape.nw;
   for (int iv = 0; iv < nv; ++iv)
     for (int iw = 0; iw < nw; ++iw) {
       s.v[iv * nw + iw] = sample_at(win.v_lo, win.v_hi, iv, nv);
       s.w[iv * nw + iw] = sample_at(win.w_lo, win.w_hi, iw, nw);
     }
+}
+
+// One rollout step of every lane: the chord along the current direction, then the direction
+// turned by w dt. The arrays are distinct (restrict), which lets the loop vectorise.
+void advance_lanes(int n, double* __restrict px, double* __restrict py, double* __restrict ux,
+                   double* __restrict uy, const double* __restrict chord,
+                   const double* __restrict rot_c, const double* __restrict rot_s) {
+  for (int i = 0; i < n; ++i) {
+    px[i] = px[i] + chord[i] * ux[i];
+    py[i] = py[i] + chord[i] * uy[i];
+    const double x = ux[i];
+    ux[i] = x * rot_c[i] - uy[i] * rot_s[i];
+    uy[i] = x * rot_s[i] + uy[i] * rot_c[i];
+  }
 }
 
 // Step 3: every pair rolled out at once: per rollout, the first hit step (static, other), the
@@ -168,13 +225,25 @@ bool roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, cons
 
   // Rollout set-up: each step is the exact arc of algos/local/unicycle.h, its chord direction
   // rotating by w dt per step.
+  // The trigonometry depends on w alone: worked out once per w sample (the first row of the
+  // sample grid, iv = 0) and copied to the other rows, the same values bit for bit.
+  const int nw = shape.nw;
   for (int i = 0; i < n; ++i) {
     const double half = 0.5 * p.dt * s.w[i];
-    s.chord[i] = s.v[i] * to_cells * p.dt * sinc(half);
-    s.ux[i] = std::cos(pose.theta + half);
-    s.uy[i] = std::sin(pose.theta + half);
-    s.rot_c[i] = std::cos(2.0 * half);
-    s.rot_s[i] = std::sin(2.0 * half);
+    if (i < nw) {
+      s.turn_sinc[i] = sinc(half);
+      s.ux[i] = std::cos(pose.theta + half);
+      s.uy[i] = std::sin(pose.theta + half);
+      s.rot_c[i] = std::cos(2.0 * half);
+      s.rot_s[i] = std::sin(2.0 * half);
+    } else {
+      const int iw = i % nw;
+      s.ux[i] = s.ux[iw];
+      s.uy[i] = s.uy[iw];
+      s.rot_c[i] = s.rot_c[iw];
+      s.rot_s[i] = s.rot_s[iw];
+    }
+    s.chord[i] = s.v[i] * to_cells * p.dt * s.turn_sinc[i % nw];
   }
   s.px.setConstant(pose.x);
   s.py.setConstant(pose.y);
@@ -214,18 +283,30 @@ bool roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, cons
   const auto goal_count = static_cast<int>(goals.size());
   const double tol2 = passing.tolerance * passing.tolerance;
   const double radius2 = passing.radius * passing.radius;
+  double *px = s.px.data(), *py = s.py.data(), *ux = s.ux.data(), *uy = s.uy.data();
+  const double *chord = s.chord.data(), *rot_c = s.rot_c.data(), *rot_s = s.rot_s.data();
+  double *step_static = s.step_static.data(), *step_other = s.step_other.data();
+  double *hit_static = s.hit_static.data(), *hit_other = s.hit_other.data();
+  double *min_static = s.min_static.data(), *min_other = s.min_other.data();
+  double* goal_index = s.goal_index.data();
   for (int k = 1; k <= steps; ++k) {
     if (poll_expired(poll)) return false;
-    s.px += s.chord * s.ux;
-    s.py += s.chord * s.uy;
-    for (int i = 0; i < n; ++i) {
-      const double ux = s.ux[i];
-      s.ux[i] = ux * s.rot_c[i] - s.uy[i] * s.rot_s[i];
-      s.uy[i] = ux * s.rot_s[i] + s.uy[i] * s.rot_c[i];
-      s.step_static[i] = capped_static_sq(occ, stride, width, height, s.px[i], s.py[i]);
-    }
+    const double kk = k;
+    // Plain loops over the lanes rather than Eigen expressions: Eigen evaluates a select() of a
+    // combined comparison one coefficient at a time, with branches. Each statement keeps the
+    // expression's operations in its order, so the values are the same bit for bit.
+    advance_lanes(n, px, py, ux, uy, chord, rot_c, rot_s);
+    capped_static_sq_all(view.known, s);
+    // Eigen's square root, not std::sqrt: with AVX-512 Eigen's packet sqrt is a refined
+    // reciprocal estimate, not always the correctly rounded root, and the results are its.
     s.step_static = s.step_static.sqrt();
-    s.step_other.setConstant(dyn_cap);
+    for (int i = 0; i < n; ++i) {
+      hit_static[i] =
+          (step_static[i] < threshold_static) & (hit_static[i] > steps) ? kk : hit_static[i];
+      min_static[i] = std::min(min_static[i], step_static[i]);
+      step_other[i] = dyn_cap;
+    }
+    // Eigen expressions still: GCC contracts their sums of squares into FMAs its own way.
     for (const Cell& c : view.unknown) {
       const double x0 = c.x, x1 = c.x + 1.0, y0 = c.y, y1 = c.y + 1.0;
       s.step_other = s.step_other.min(((x0 - s.px).max(s.px - x1).max(0.0).square() +
@@ -238,22 +319,22 @@ bool roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, cons
       s.step_other = s.step_other.min(((s.px - cx).square() + (s.py - cy).square()).sqrt() -
                                       d.radius - p.dynamic_margin);
     }
-    const auto kk = static_cast<double>(k);
-    s.hit_static =
-        (s.step_static < threshold_static && s.hit_static > steps).select(kk, s.hit_static);
-    s.hit_other = (s.step_other < threshold_other && s.hit_other > steps).select(kk, s.hit_other);
-    s.min_static = s.min_static.min(s.step_static);
-    s.min_other = s.min_other.min(s.step_other);
+    for (int i = 0; i < n; ++i) {
+      hit_other[i] = (step_other[i] < threshold_other) & (hit_other[i] > steps) ? kk : hit_other[i];
+      min_other[i] = std::min(min_other[i], step_other[i]);
+    }
     for (int j = 0; j < goal_count; ++j) {
       // passes_goal() on every rollout point at once.
       const Point g = goals[static_cast<std::size_t>(j)];
       const Point a = j == 0 ? target.from : goals[static_cast<std::size_t>(j - 1)];
       const double dx = g.x - a.x, dy = g.y - a.y;
-      const auto d2 = (s.px - g.x).square() + (s.py - g.y).square();
-      s.goal_index =
-          (s.goal_index == j &&
-           (d2 <= tol2 || (d2 <= radius2 && (s.px - g.x) * dx + (s.py - g.y) * dy >= 0.0)))
-              .select(static_cast<double>(j + 1), s.goal_index);
+      const double passed = j, next = j + 1;
+      for (int i = 0; i < n; ++i) {
+        const double ex = px[i] - g.x, ey = py[i] - g.y;
+        const double d2 = ex * ex + ey * ey;
+        const bool pass = (d2 <= tol2) | ((d2 <= radius2) & (ex * dx + ey * dy >= 0.0));
+        goal_index[i] = (goal_index[i] == passed) & pass ? next : goal_index[i];
+      }
     }
   }
   return true;
@@ -289,6 +370,11 @@ void score_terms(const DwaParams& p, const Pose& pose, const StepShape& shape,
   // point| (paper 003 Head / Heading, paper 004 PHead).
   const double horizon = steps * p.dt;
   for (int i = 0; i < n; ++i) {
+    // Only admissible pairs are scored (score_pairs, best_pair): the others' atan2 is skipped.
+    if (!s.admissible[i]) {
+      s.heading[i] = 0.0;
+      continue;
+    }
     const auto gi = static_cast<int>(s.goal_index[i]);
     if (gi >= goal_count) {
       s.heading[i] = kPi;  // the rollout reaches the goal

@@ -124,6 +124,9 @@ struct DwaScratch {
   Eigen::ArrayXd goal_index;             // local goals the rollout has passed so far
   Eigen::ArrayXd heading, velocity, dist, dist_dyna, score, smoothed;
   Eigen::Array<bool, Eigen::Dynamic, 1> admissible;
+  Eigen::ArrayXd turn_sinc;                              // sinc(w dt / 2) per w sample
+  Eigen::ArrayXd frac_x, frac_y;                         // rollout point within its cell
+  Eigen::Array<std::uint32_t, Eigen::Dynamic, 1> block;  // occupancy of its 3x3 block
 };
 
 struct DwaDecision {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/cell_blocks.h"
 #include "core/distance_transform.h"
 #include "core/grid.h"
 #include "core/rng.h"
@@ -159,6 +160,36 @@ TEST(SummedArea, CountsEqualBruteForce) {
       ASSERT_EQ(sat.obstacles(x0, y0, x1, y1), obstacles);
       ASSERT_EQ(sat.cells(x0, y0, x1, y1), cells);
     }
+  }
+}
+
+// Every padded cell's mask against its 3x3 block read cell by cell, the border ring included
+// (neighbours beyond the padded array count as blocked); and the companion rebuilt after an edit.
+TEST(CellBlocks, MasksEqualTheBlocksCellByCell) {
+  Rng rng(6, 2);
+  auto check = [](const Grid& g) {
+    const std::uint32_t* masks = g.cell_blocks().masks();
+    auto blocked = [&](int x, int y) {
+      return x < -1 || y < -1 || x > g.width() || y > g.height() || g.blocked(x, y);
+    };
+    for (int y = -1; y <= g.height(); ++y)
+      for (int x = -1; x <= g.width(); ++x) {
+        const std::uint32_t m = masks[g.index(x, y)];
+        const std::pair<int, int> offsets[] = {{-1, 0}, {1, 0},  {0, -1}, {0, 1}, {-1, -1},
+                                               {1, -1}, {-1, 1}, {1, 1},  {0, 0}};
+        for (int b = 0; b < 9; ++b) {
+          const auto [dx, dy] = offsets[b];
+          ASSERT_EQ((m >> b) & 1u, blocked(x + dx, y + dy) ? 1u : 0u)
+              << "cell " << x << "," << y << " bit " << b;
+        }
+      }
+  };
+  for (int trial = 0; trial < 30; ++trial) {
+    Grid g = random_grid(rng.between(1, 30), rng.between(1, 30), rng.uniform01(), rng);
+    check(g);
+    const int x = rng.between(0, g.width() - 1), y = rng.between(0, g.height() - 1);
+    g.set_blocked(x, y, !g.blocked(x, y));
+    check(g);
   }
 }
 

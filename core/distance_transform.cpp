@@ -120,12 +120,17 @@ double DistanceTransform::centre_distance(int x, int y) const {
   return std::sqrt(static_cast<double>(squared_centre_distance(x, y)));
 }
 
-double DistanceTransform::search(Point a, Point b, Candidate* cells, int count) const {
+double DistanceTransform::search(Point a, Point b, Candidate* cells, int count,
+                                 double below) const {
+  // No obstacle near any candidate can come closer than `below`: nothing to search.
+  std::int64_t nearest = std::numeric_limits<std::int64_t>::max();
+  for (int k = 0; k < count; ++k) nearest = std::min(nearest, cells[k].squared);
+  if (count > 0 && std::sqrt(static_cast<double>(nearest)) - kSqrt2 >= below) return below;
   std::sort(cells, cells + count, [](const Candidate& l, const Candidate& r) {
     return l.squared != r.squared ? l.squared < r.squared : l.index < r.index;
   });
   const int rows = height_ + 2;
-  double best = std::numeric_limits<double>::infinity();
+  double best = below;
   for (int k = 0; k < count; ++k) {
     const std::int64_t d2 = cells[k].squared;
     const int cx = cells[k].index % stride_;  // padded coordinates
@@ -158,7 +163,8 @@ double DistanceTransform::search(Point a, Point b, Candidate* cells, int count) 
 
 double DistanceTransform::clearance(Point p) const { return segment_clearance(p, p); }
 
-double DistanceTransform::segment_clearance(Point a, Point b) const {
+double DistanceTransform::segment_clearance(Point a, Point b, double below) const {
+  if (!(below > 0.0)) return below;
   auto inside = [this](Point p) {
     return p.x >= 0.0 && p.y >= 0.0 && p.x <= width_ && p.y <= height_;
   };
@@ -200,7 +206,7 @@ double DistanceTransform::segment_clearance(Point a, Point b) const {
     for (int y = y_first; y <= y_last; ++y) add(x, y);
   }
   Candidate* cells = big.empty() ? small.data() : big.data();
-  return search(a, b, cells, count);
+  return search(a, b, cells, count, below);
 }
 
 }  // namespace agv

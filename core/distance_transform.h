@@ -9,6 +9,7 @@
 // keeps no pointer to the Grid (grids move).
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/grid.h"
@@ -34,7 +35,12 @@ class DistanceTransform {
   // (that is inside the border wall).
   double clearance(Point p) const;
   // Exact minimum of clearance() over the segment a-b (0 if it touches an obstacle square).
-  double segment_clearance(Point a, Point b) const;
+  // With `below`: that minimum when it is less than `below`, else some value >= below (so
+  // min(below, segment_clearance(a, b, below)) is the exact min(below, clearance)); the
+  // search then skips every obstacle that cannot come closer than `below`, which makes a
+  // polyline's least clearance far cheaper than its segments' clearances one by one.
+  double segment_clearance(Point a, Point b,
+                           double below = std::numeric_limits<double>::infinity()) const;
 
  private:
   struct Candidate {
@@ -42,7 +48,7 @@ class DistanceTransform {
     int index;             // padded index
   };
   int index(int x, int y) const { return (y + 1) * stride_ + (x + 1); }
-  double search(Point a, Point b, Candidate* cells, int count) const;
+  double search(Point a, Point b, Candidate* cells, int count, double below) const;
 
   int width_ = 0;
   int height_ = 0;

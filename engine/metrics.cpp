@@ -199,7 +199,7 @@ PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
   double clearance =
       path.size() == 1 ? dt.clearance(path[0]) : std::numeric_limits<double>::infinity();
   for (std::size_t i = 1; i < path.size(); ++i)
-    clearance = std::min(clearance, dt.segment_clearance(path[i - 1], path[i]));
+    clearance = std::min(clearance, dt.segment_clearance(path[i - 1], path[i], clearance));
   m.min_clearance = clearance;
   m.min_clearance_m = clearance * grid.cell_edge();
 

@@ -179,6 +179,34 @@ TEST(DistanceTransform, SegmentClearanceEqualsBruteForce) {
   }
 }
 
+// With a bound: the same double below it, at least the bound otherwise, so a polyline's running
+// minimum is bit for bit the unbounded one (engine/metrics.cpp min_clearance).
+TEST(DistanceTransform, BoundedSegmentClearanceIsExactBelowTheBound) {
+  Rng rng(8, 3);
+  for (int trial = 0; trial < 40; ++trial) {
+    const Grid g = random_grid(rng.between(1, 30), rng.between(1, 30), rng.uniform(0.0, 0.4), rng);
+    const DistanceTransform dt(g);
+    double running = std::numeric_limits<double>::infinity();
+    double bounded = running;
+    Point prev = random_point(g, rng);
+    for (int k = 0; k < 60; ++k) {
+      const Point next = random_point(g, rng);
+      const double exact = dt.segment_clearance(prev, next);
+      const double below = rng.uniform(0.0, 3.0);
+      const double got = dt.segment_clearance(prev, next, below);
+      if (exact < below) {
+        ASSERT_EQ(got, exact);
+      } else {
+        ASSERT_GE(got, below);
+      }
+      running = std::min(running, exact);
+      bounded = std::min(bounded, dt.segment_clearance(prev, next, bounded));
+      ASSERT_EQ(bounded, running);
+      prev = next;
+    }
+  }
+}
+
 TEST(DistanceTransform, SegmentClearanceExactCases) {
   Grid g(12, 10);
   g.set_blocked(6, 2, true);  // square [6, 7] x [2, 3]

@@ -22,6 +22,7 @@ Command add_validate_command(CLI::App& app);  // cli/cmd_validate.cpp
 Command add_list_command(CLI::App& app);      // cli/cmd_list.cpp
 Command add_export_command(CLI::App& app);    // cli/cmd_export.cpp
 Command add_compare_command(CLI::App& app);   // cli/cmd_compare.cpp
+Command add_digest_command(CLI::App& app);    // cli/cmd_digest.cpp
 Command add_plan_command(CLI::App& app);      // cli/cmd_plan.cpp
 Command add_scen_command(CLI::App& app);      // cli/cmd_scen.cpp
 

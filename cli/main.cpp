@@ -33,9 +33,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", agv::version_text());
   const std::vector<agv::Command> commands = {
-      agv::add_run_command(app),      agv::add_merge_command(app), agv::add_worker_command(app),
-      agv::add_validate_command(app), agv::add_list_command(app),  agv::add_export_command(app),
-      agv::add_compare_command(app),  agv::add_plan_command(app),  agv::add_scen_command(app)};
+      agv::add_run_command(app),      agv::add_merge_command(app),  agv::add_worker_command(app),
+      agv::add_validate_command(app), agv::add_list_command(app),   agv::add_export_command(app),
+      agv::add_compare_command(app),  agv::add_digest_command(app), agv::add_plan_command(app),
+      agv::add_scen_command(app)};
   // Planner plugins (engine/plugins.h), loaded before the command runs.
   std::vector<std::string> plugins;
   for (const auto& c : commands)

@@ -1,9 +1,9 @@
 #pragma once
 // Arithmetic shared by the reference walk (line_of_sight.cpp) and the word-parallel checks
 // (line_of_sight_batch.cpp). Both must reach the same verdict bit for bit, so every floating
-// point value either of them compares is computed here, by one expression, and both files are
-// compiled with -ffp-contract=off (algos/CMakeLists.txt): no FMA contraction may round one
-// differently from the other.
+// point value either of them compares is computed here, by one expression, and, like all of the
+// engine, both are compiled with -ffp-contract=off (CMakeLists.txt): no FMA contraction may round
+// one differently from the other.
 
 #include <algorithm>
 #include <cmath>

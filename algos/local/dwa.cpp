@@ -297,8 +297,8 @@ bool roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, cons
     // expression's operations in its order, so the values are the same bit for bit.
     advance_lanes(n, px, py, ux, uy, chord, rot_c, rot_s);
     capped_static_sq_all(view.known, s);
-    // Eigen's square root, not std::sqrt: with AVX-512 Eigen's packet sqrt is a refined
-    // reciprocal estimate, not always the correctly rounded root, and the results are its.
+    // Eigen's packet square root: with EIGEN_FAST_MATH=0 (CMakeLists.txt) the correctly rounded
+    // root on every vector width, as std::sqrt gives.
     s.step_static = s.step_static.sqrt();
     for (int i = 0; i < n; ++i) {
       hit_static[i] =
@@ -306,7 +306,8 @@ bool roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, cons
       min_static[i] = std::min(min_static[i], step_static[i]);
       step_other[i] = dyn_cap;
     }
-    // Eigen expressions still: GCC contracts their sums of squares into FMAs its own way.
+    // Eigen expressions: without FMA contraction (-ffp-contract=off, CMakeLists.txt) their sums
+    // of squares round as written, on every build.
     for (const Cell& c : view.unknown) {
       const double x0 = c.x, x1 = c.x + 1.0, y0 = c.y, y1 = c.y + 1.0;
       s.step_other = s.step_other.min(((x0 - s.px).max(s.px - x1).max(0.0).square() +

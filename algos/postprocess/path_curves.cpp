@@ -1,7 +1,7 @@
 #include "algos/postprocess/path_curves.h"
 
-#include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
@@ -39,14 +39,27 @@ bool on_vertex(Point p) {
 }
 
 // Paper 004 appendix A: P(t) = 1/6 [1 t t^2 t^3] M [P0 P1 P2 P3]^T.
-const Eigen::Matrix4d& bspline_basis() {
-  static const Eigen::Matrix4d m = (Eigen::Matrix4d() << 1, 4, 1, 0,  //
-                                    -3, 0, 3, 0,                      //
-                                    3, -6, 3, 0,                      //
-                                    -1, 3, -3, 1)
-                                       .finished() /
-                                   6.0;
-  return m;
+constexpr double kBSplineBasis[4][4] = {{1 / 6.0, 4 / 6.0, 1 / 6.0, 0 / 6.0},
+                                        {-3 / 6.0, 0 / 6.0, 3 / 6.0, 0 / 6.0},
+                                        {3 / 6.0, -6 / 6.0, 3 / 6.0, 0 / 6.0},
+                                        {-1 / 6.0, 3 / 6.0, -3 / 6.0, 1 / 6.0}};
+
+// The coefficients of 1, t, t^2, t^3 of the segment whose controls are q[j..j+3]: the basis times
+// the controls, summed in control order. A plain loop, not an Eigen product: Eigen's products
+// use FMA instructions wherever the build's -march has them (its pmadd), so their last bits
+// followed the build (docs/ARCHITECTURE.md "Determinism").
+std::array<Point, 4> bspline_coefficients(const std::vector<Point>& q, int j) {
+  std::array<Point, 4> c{};
+  for (int i = 0; i < 4; ++i) {
+    const Point& q0 = q[static_cast<std::size_t>(j)];
+    c[i] = {kBSplineBasis[i][0] * q0.x, kBSplineBasis[i][0] * q0.y};
+    for (int k = 1; k < 4; ++k) {
+      const Point& qk = q[static_cast<std::size_t>(j + k)];
+      c[i].x = c[i].x + kBSplineBasis[i][k] * qk.x;
+      c[i].y = c[i].y + kBSplineBasis[i][k] * qk.y;
+    }
+  }
+  return c;
 }
 
 }  // namespace
@@ -85,22 +98,16 @@ std::vector<Point> sample_bspline(std::span<const Point> controls, double step,
   q.push_back(controls.back());
   q.push_back(controls.back());
   step = std::max(step, 1e-6);
-  const Eigen::Matrix4d& m = bspline_basis();
   const int segments = static_cast<int>(q.size()) - 3;
   for (int j = 0; j < segments; ++j) {
-    Eigen::Matrix<double, 4, 2> g;
     double hull = 0.0;  // control polygon length: bounds the segment's arc length
-    for (int r = 0; r < 4; ++r) {
-      g(r, 0) = q[j + r].x;
-      g(r, 1) = q[j + r].y;
-      if (r > 0) hull += point_distance(q[j + r - 1], q[j + r]);
-    }
-    const Eigen::Matrix<double, 4, 2> c = m * g;  // rows: coefficients of 1, t, t^2, t^3
+    for (int r = 1; r < 4; ++r) hull += point_distance(q[j + r - 1], q[j + r]);
+    const std::array<Point, 4> c = bspline_coefficients(q, j);
     const int samples = std::max(1, static_cast<int>(std::ceil(hull / step)));
     for (int k = 0; k < samples; ++k) {
       const double t = static_cast<double>(k) / samples;
-      const Point p{c(0, 0) + t * (c(1, 0) + t * (c(2, 0) + t * c(3, 0))),
-                    c(0, 1) + t * (c(1, 1) + t * (c(2, 1) + t * c(3, 1)))};
+      const Point p{c[0].x + t * (c[1].x + t * (c[2].x + t * c[3].x)),
+                    c[0].y + t * (c[1].y + t * (c[2].y + t * c[3].y))};
       if (!out.empty() && (point_distance(out.back(), p) <= kSamePoint || on_vertex(p))) continue;
       out.push_back(p);
       if (segment_of) segment_of->push_back(j);

@@ -297,28 +297,34 @@ bool roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, cons
     // expression's operations in its order, so the values are the same bit for bit.
     advance_lanes(n, px, py, ux, uy, chord, rot_c, rot_s);
     capped_static_sq_all(view.known, s);
-    // Eigen's packet square root: with EIGEN_FAST_MATH=0 (CMakeLists.txt) the correctly rounded
-    // root on every vector width, as std::sqrt gives.
-    s.step_static = s.step_static.sqrt();
+    // std::sqrt in a plain loop, not Eigen's: with EIGEN_FAST_MATH=0 (CMakeLists.txt, for results
+    // that do not depend on the build) Eigen takes AVX-512's doubles one at a time, while GCC
+    // vectorises this loop with the correctly rounded packet root (-fno-math-errno).
+    for (int i = 0; i < n; ++i) step_static[i] = std::sqrt(step_static[i]);
     for (int i = 0; i < n; ++i) {
       hit_static[i] =
           (step_static[i] < threshold_static) & (hit_static[i] > steps) ? kk : hit_static[i];
       min_static[i] = std::min(min_static[i], step_static[i]);
       step_other[i] = dyn_cap;
     }
-    // Eigen expressions: without FMA contraction (-ffp-contract=off, CMakeLists.txt) their sums
-    // of squares round as written, on every build.
+    // Plain loops for the same reason; without FMA contraction (-ffp-contract=off) their sums of
+    // squares round as written, on every build.
     for (const Cell& c : view.unknown) {
       const double x0 = c.x, x1 = c.x + 1.0, y0 = c.y, y1 = c.y + 1.0;
-      s.step_other = s.step_other.min(((x0 - s.px).max(s.px - x1).max(0.0).square() +
-                                       (y0 - s.py).max(s.py - y1).max(0.0).square())
-                                          .sqrt());
+      for (int i = 0; i < n; ++i) {
+        const double ex = std::max(std::max(x0 - px[i], px[i] - x1), 0.0);
+        const double ey = std::max(std::max(y0 - py[i], py[i] - y1), 0.0);
+        step_other[i] = std::min(step_other[i], std::sqrt(ex * ex + ey * ey));
+      }
     }
     for (const Disc& d : view.moving) {
       const double cx = d.centre.x + d.velocity.x * k * p.dt;
       const double cy = d.centre.y + d.velocity.y * k * p.dt;
-      s.step_other = s.step_other.min(((s.px - cx).square() + (s.py - cy).square()).sqrt() -
-                                      d.radius - p.dynamic_margin);
+      for (int i = 0; i < n; ++i) {
+        const double ex = px[i] - cx, ey = py[i] - cy;
+        step_other[i] =
+            std::min(step_other[i], std::sqrt(ex * ex + ey * ey) - d.radius - p.dynamic_margin);
+      }
     }
     for (int i = 0; i < n; ++i) {
       hit_other[i] = (step_other[i] < threshold_other) & (hit_other[i] > steps) ? kk : hit_other[i];

@@ -181,10 +181,18 @@ class WindowSwarm {
     }
   }
 
-  // |a - x| + |x - b| for each row of pos.
+  // |a - x| + |x - b| for each row of pos. A plain loop with std::sqrt, which GCC vectorises:
+  // with EIGEN_FAST_MATH=0 (CMakeLists.txt) Eigen takes AVX-512's square roots one at a time.
   void lengths(const Swarm& pos, Eigen::ArrayXd& length) const {
-    length = ((pos.col(0) - a_.x).square() + (pos.col(1) - a_.y).square()).sqrt() +
-             ((pos.col(0) - b_.x).square() + (pos.col(1) - b_.y).square()).sqrt();
+    const Eigen::Index n = pos.rows();
+    length.resize(n);
+    const double* x = pos.col(0).data();
+    const double* y = pos.col(1).data();
+    double* out = length.data();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double ax = x[i] - a_.x, ay = y[i] - a_.y, bx = x[i] - b_.x, by = y[i] - b_.y;
+      out[i] = std::sqrt(ax * ax + ay * ay) + std::sqrt(bx * bx + by * by);
+    }
   }
 
   // Eq. 5.1g resolved, for the rows in `need` (the others get +inf, which no comparison that

@@ -36,10 +36,7 @@ int command_export(const ExportCommand& cmd) {
   ignore_file_size_signal();
   SweepResults results = empty_results(config);
   RunMessages messages;
-  for (const auto& j : cmd.journals) {
-    restore_journal(j, results);
-    read_run_messages(j, results, messages);
-  }
+  for (const auto& j : cmd.journals) restore_journal(j, results, &messages);
   update_completeness(results);
   if (coverage_of(results).runs_present == 0)
     throw InputError("the journals hold no run of this config; nothing exported");

@@ -307,14 +307,28 @@ class Channel {
     }
   }
 
-  // One record a line; bytes that are not UTF-8 (in a planner's message, say) as U+FFFD.
-  void send(const nlohmann::json& record) { write_all(out_, json_text(record) + "\n"); }
+  // One reply a line (its records are written with bytes that are not UTF-8 as U+FFFD).
+  void send(const std::string& line) { write_all(out_, line); }
 
  private:
   int in_ = -1;
   int out_ = -1;
   std::string buffer_;
 };
+
+// A run's reply: {"map": MAP_RECORD, "run": RUN_RECORD} (engine/run_record.h), the map record
+// with the references computed so far, which the run record's rebuilt metrics divide by.
+std::string worker_reply(const MapTaskRun& run) {
+  const SweepCell& cell = run.context.plan.cell_of(run.task);
+  const int map_index = run.context.plan.map_index_of(run.task);
+  const MapFacts facts = run.facts();
+  std::string map = map_record(cell, map_index, facts);
+  std::string record =
+      run_record(cell, map_index, run.planner, run_slot_of(run.output), run.output.message, facts);
+  map.pop_back();  // the newlines
+  record.pop_back();
+  return "{\"map\":" + map + ",\"run\":" + record + "}\n";
+}
 
 // The task loop: each request's runs sent back as they finish; 2 on a malformed request.
 int serve_tasks(Channel& channel, const SweepConfig& config, MapTaskWorkspace& workspace) {
@@ -332,7 +346,7 @@ int serve_tasks(Channel& channel, const SweepConfig& config, MapTaskWorkspace& w
       return 2;
     }
     run_map_task(context, request.task, request.planners, workspace,
-                 [&channel](const MapTaskRun& run) { channel.send(run.record()); });
+                 [&channel](const MapTaskRun& run) { channel.send(worker_reply(run)); });
   }
   return 0;
 }
@@ -366,11 +380,11 @@ int worker_main(std::int64_t memory_mb) {
     config = parse_config(first.at("config"), base_dir);
     workspace.planners = configure_planners(config);
   } catch (const std::exception& e) {
-    channel.send({{"fatal", e.what()}});
+    channel.send(json_text({{"fatal", e.what()}}) + "\n");
     return 2;
   }
   try {
-    channel.send({{"ready", true}});
+    channel.send(json_text({{"ready", true}}) + "\n");
     return serve_tasks(channel, config, workspace);
   } catch (const std::runtime_error& e) {  // the parent is gone: nobody to answer
     std::cerr << "agvbench worker: " << e.what() << "\n";

@@ -91,120 +91,43 @@ void JournalWriter::finish() {
   if (::close(fd) != 0) fail("close failed", errno);
 }
 
-namespace {
-
-double number_or_nan(const json& v) {
-  return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
-}
-
-}  // namespace
-
-RecordRestorer::RecordRestorer(SweepResults& results)
-    : config_hash_(results.config_hash), results_(results) {
+RecordRestorer::RecordRestorer(SweepResults& results, RunMessages* messages)
+    : config_hash_(results.config_hash), results_(results), messages_(messages) {
   for (const auto& c : results.plan.cells) cell_index_[c.key] = c.index;
   for (std::size_t p = 0; p < results.labels.size(); ++p) planner_index_[results.labels[p]] = p;
 }
 
-bool RecordRestorer::restore(const json& rec, const std::string& where) {
-  try {
-    const json tool = rec.value("tool", json());
-    const json version = rec.value("journal_version", json());
-    if (tool != kJournalTool || version != kJournalVersion)
-      throw InputError(where + ": not a record of this agvbench's journal format (it says tool " +
-                       (tool.is_null() ? std::string("(none)") : json_text(tool)) +
-                       ", journal_version " +
-                       (version.is_null() ? std::string("(none)") : json_text(version)) +
-                       "; this agvbench reads tool \"" + kJournalTool + "\", journal_version " +
-                       std::to_string(kJournalVersion) + ")");
-    const std::string hash = rec.at("config_hash").get<std::string>();
-    if (hash != config_hash_) refuse_changed_map_file(rec, where);
-    if (hash != config_hash_)
-      throw InputError(where + ": journal was written by a different config (hash " + hash +
-                       ", this config " + config_hash_ + ")");
-    const auto cell = cell_index_.find(rec.at("cell").get<std::string>());
-    if (cell == cell_index_.end()) throw InputError(where + ": unknown cell");
-    const auto planner = planner_index_.find(rec.at("planner").get<std::string>());
-    if (planner == planner_index_.end()) throw InputError(where + ": unknown planner label");
-    const int map_index = rec.at("map_index").get<int>();
-    const SweepCell& sweep_cell = results_.plan.cells[static_cast<std::size_t>(cell->second)];
-    if (map_index < 0 || map_index >= sweep_cell.maps)
-      throw InputError(where + ": map_index out of range");
-    const std::int64_t task = results_.plan.task_of(sweep_cell, map_index);
-    if (!results_.scheduled(task, planner->second))
-      throw InputError(where + ": planner \"" + planner->first +
-                       "\" is not scheduled on this map (outside its \"only\" scope)");
-    if (results_.run(task, planner->second).done) return false;
-    results_.store(task, planner->second, slot_of_record(rec, where), map_slot_of_record(rec));
-    return true;
-  } catch (const json::exception& e) {
-    throw InputError(where + ": malformed journal record (" + e.what() + ")");
-  }
+bool RecordRestorer::restore(const DecodedRecord& rec, const std::string& where) {
+  if (rec.kind == DecodedRecord::Kind::map) return true;
+  if (rec.config_hash != config_hash_)
+    throw InputError(where + ": journal was written by a different config (hash " +
+                     rec.config_hash + ", this config " + config_hash_ + ")");
+  if (rec.kind == DecodedRecord::Kind::header) return true;
+  const auto cell = cell_index_.find(rec.cell);
+  if (cell == cell_index_.end()) throw InputError(where + ": unknown cell");
+  const auto planner = planner_index_.find(rec.planner);
+  if (planner == planner_index_.end()) throw InputError(where + ": unknown planner label");
+  const SweepCell& sweep_cell = results_.plan.cells[static_cast<std::size_t>(cell->second)];
+  if (rec.map_index < 0 || rec.map_index >= sweep_cell.maps)
+    throw InputError(where + ": map_index out of range");
+  const std::int64_t task = results_.plan.task_of(sweep_cell, rec.map_index);
+  if (!results_.scheduled(task, planner->second))
+    throw InputError(where + ": planner \"" + planner->first +
+                     "\" is not scheduled on this map (outside its \"only\" scope)");
+  if (results_.run(task, planner->second).done) return false;
+  results_.store(task, planner->second, rec.run, rec.map.slot);
+  if (messages_ != nullptr && !rec.message.empty())
+    messages_->emplace(std::make_pair(task, planner->second), rec.message);
+  return true;
 }
 
-RunSlot RecordRestorer::slot_of_record(const json& rec, const std::string& where) {
-  RunSlot slot;
-  const auto outcome = outcome_from_string(rec.at("outcome").get<std::string>());
-  if (!outcome) throw InputError(where + ": unknown outcome");
-  slot.outcome = *outcome;
-  slot.metrics.fill(std::numeric_limits<double>::quiet_NaN());
-  // This engine writes every one of its metrics, null where undefined: a record without one was
-  // written by an agvbench that measures others (the journal format alone does not say), and
-  // mixing its values in would report two definitions under one name.
-  const json& metrics = rec.at("metrics");
-  for (const auto name : kRunMetricNames)
-    if (!metrics.contains(name))
-      throw InputError(where + ": no metric \"" + std::string(name) +
-                       "\": written by an agvbench that measures other metrics than this one "
-                       "(which writes each of its " +
-                       std::to_string(kRunMetricNames.size()) +
-                       " on every record, null when undefined); start a new journal");
-  for (const auto& [name, value] : metrics.items()) {
-    bool known = false;
-    for (std::size_t i = 0; i < kRunMetricNames.size(); ++i) {
-      if (kRunMetricNames[i] == name) {
-        slot.metrics[i] = number_or_nan(value);
-        known = true;
-      }
-    }
-    if (!known) slot.extra.emplace_back(name, number_or_nan(value));
-  }
-  const json& timing = rec.at("timing");
-  slot.plan_time_ns = timing.at("plan_time_ns").get<std::int64_t>();
-  for (const auto& [name, ns] : timing.at("phases").items())
-    slot.phases.push_back({name, ns.get<std::int64_t>()});
-  return slot;
-}
-
-MapSlot RecordRestorer::map_slot_of_record(const json& rec) {
-  MapSlot ms;
-  const json& map = rec.at("map");
-  if (map.contains("rejections")) {
-    ms.rejections = map.at("rejections").get<int>();
-    ms.obstacle_fraction = map.at("obstacle_fraction").get<double>();
-    ms.done = true;
-  }
-  return ms;
-}
-
-void RecordRestorer::refuse_changed_map_file(const json& rec, const std::string& where) const {
-  if (!rec.is_object() || !rec.contains("map_file") || !rec.at("map_file").is_object()) return;
-  const auto c = cell_index_.find(rec.value("cell", std::string()));
-  if (c == cell_index_.end()) return;
-  const SweepCell& now = results_.plan.cells[static_cast<std::size_t>(c->second)];
-  const std::string then = rec.at("map_file").value("content_hash", std::string());
-  if (now.file != nullptr && then != now.file->content_hash)
-    throw InputError(where + ": map file " + now.file->path +
-                     " changed since the journal was written (content hash " + then + " then, " +
-                     now.file->content_hash +
-                     " now): a changed map file is another sweep; start a new journal");
-}
-
-JournalStats restore_journal(const std::string& path, SweepResults& results) {
-  const std::string& config_hash = results.config_hash;
+JournalStats for_each_journal_record(
+    const std::string& path,
+    const std::function<void(const DecodedRecord&, const std::string&)>& f) {
   require_regular_file(path, "journal");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("journal \"" + path + "\": " + std::strerror(errno));
-  RecordRestorer restorer(results);
+  JournalDecoder decoder;
   JournalStats stats;
   std::string line;
   std::int64_t line_no = 0;
@@ -221,29 +144,87 @@ JournalStats restore_journal(const std::string& path, SweepResults& results) {
     const std::string where = path + ":" + std::to_string(line_no);
     // Records are written whole, newline included: a complete line that does not parse is a
     // damaged journal, not a kill's doing.
-    json rec = json::parse(line, nullptr, false);
+    const json rec = json::parse(line, nullptr, false);
     if (rec.is_discarded() || !rec.is_object())
       throw InputError(where + ": malformed journal record");
-    try {
-      if (restorer.restore(rec, where)) {
-        ++stats.records;
-      } else {
-        ++stats.duplicates;
-      }
-    } catch (const InputError&) {
-      // A journal of another config: when a map file changed, name it, whichever record of the
-      // journal belongs to its cell.
-      if (rec.value("config_hash", json()) == json(config_hash)) throw;
-      std::int64_t later_no = line_no;
-      while (std::getline(in, line)) {
-        ++later_no;
-        const json later = json::parse(line, nullptr, false);
-        restorer.refuse_changed_map_file(later, path + ":" + std::to_string(later_no));
-      }
-      throw;
-    }
+    const DecodedRecord decoded = decoder.decode(rec, where);
+    stats.has_header = decoded.kind == DecodedRecord::Kind::header ||
+                       (stats.has_header && decoded.version != kJournalVersionV1);
+    f(decoded, where);
   }
   return stats;
+}
+
+namespace {
+
+// A journal of another config: when a map file changed, its message names the file (a changed
+// map file is another config), whichever record of the journal belongs to its cell.
+void refuse_changed_map_files(const std::string& path, const SweepResults& results) {
+  std::map<std::string, const SweepCell*> cells;
+  for (const auto& c : results.plan.cells) cells[c.key] = &c;
+  const auto check = [&cells](const std::string& key, const std::string& then,
+                              const std::string& where) {
+    const auto c = cells.find(key);
+    if (c == cells.end() || c->second->file == nullptr) return;
+    const std::string& now = c->second->file->content_hash;
+    if (then != now)
+      throw InputError(where + ": map file " + c->second->file->path +
+                       " changed since the journal was written (content hash " + then + " then, " +
+                       now +
+                       " now): a changed map file is another sweep; start a "
+                       "new journal");
+  };
+  try {
+    JournalDecoder decoder;
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    std::int64_t line_no = 0;
+    while (std::getline(in, line)) {
+      ++line_no;
+      if (in.eof()) break;
+      const json rec = json::parse(line, nullptr, false);
+      if (rec.is_discarded() || !rec.is_object()) continue;
+      const std::string where = path + ":" + std::to_string(line_no);
+      const DecodedRecord d = decoder.decode(rec, where);
+      if (d.kind == DecodedRecord::Kind::header) {
+        for (const auto& c : decoder.header()->cells)
+          if (!c.content_hash.empty()) check(c.key, c.content_hash, where);
+      } else if (d.has_map_file) {
+        check(d.cell, d.map_file_hash, where);
+      }
+    }
+  } catch (const InputError& e) {
+    if (std::string(e.what()).find("changed since the journal was written") != std::string::npos)
+      throw;
+    // Anything else the first reading reports itself.
+  }
+}
+
+}  // namespace
+
+JournalStats restore_journal(const std::string& path, SweepResults& results,
+                             RunMessages* messages) {
+  RecordRestorer restorer(results, messages);
+  JournalStats restored;
+  try {
+    JournalStats stats =
+        for_each_journal_record(path, [&](const DecodedRecord& rec, const std::string& where) {
+          if (rec.kind != DecodedRecord::Kind::run) {
+            restorer.restore(rec, where);
+          } else if (restorer.restore(rec, where)) {
+            ++restored.records;
+          } else {
+            ++restored.duplicates;
+          }
+        });
+    stats.records = restored.records;
+    stats.duplicates = restored.duplicates;
+    return stats;
+  } catch (const InputError& e) {
+    if (std::string(e.what()).find("written by a different config") != std::string::npos)
+      refuse_changed_map_files(path, results);
+    throw;
+  }
 }
 
 }  // namespace agv

@@ -2,10 +2,12 @@
 // The per-run JSON Lines records double as a journal: each map task's records are appended and
 // flushed as soon as the task finishes, so an interrupted or killed sweep loses at most the runs
 // in flight. Resume and merge read journals back into the sweep's slots; the values round-trip
-// exactly (doubles are written with 17 significant digits), so statistics computed from a
-// resumed or merged sweep equal those of an uninterrupted one.
+// exactly (doubles in shortest round-trip form, derived metrics rebuilt bit for bit: see
+// engine/run_record.h), so statistics computed from a resumed or merged sweep equal those of an
+// uninterrupted one.
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -13,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/run_record.h"
 #include "engine/sweep_results.h"
 
 namespace agv {
@@ -64,39 +67,51 @@ class JournalWriter {
   std::string failure_;  // the first failure, repeated by later writes
 };
 
+// A run's failure message, by (map task, planner index): journals carry it, the slots do not.
+using RunMessages = std::map<std::pair<std::int64_t, std::size_t>, std::string>;
+
 struct JournalStats {
-  std::int64_t records = 0;
+  std::int64_t records = 0;     // runs restored
   std::int64_t torn_lines = 0;  // a partial last line, ignored
   std::int64_t duplicates = 0;  // records of a run already restored (ignored)
+  // Whether the file's last segment is a version 2 journal of this config (its header read):
+  // a resume appends to it as it is; otherwise it first writes a header of its own.
+  bool has_header = false;
 };
 
-// Restores records into a sweep's slots (shared by resume, merge and the isolated runner).
+// Restores decoded records into a sweep's slots (shared by resume, merge, export and the
+// isolated runner).
 class RecordRestorer {
  public:
-  // Records of the results' config (its config_hash).
-  explicit RecordRestorer(SweepResults& results);
-  // Returns false when the run was already restored (a duplicate). Throws InputError naming
-  // `where` for a record of another config or of a cell, map or planner this sweep lacks.
-  bool restore(const nlohmann::json& record, const std::string& where);
-  // Throws InputError naming the map file when `record` is of a map source's cell whose file
-  // has changed since the record was written (its content hash differs).
-  void refuse_changed_map_file(const nlohmann::json& record, const std::string& where) const;
+  // Records of the results' config (its config_hash); failure messages go to `messages` when
+  // given.
+  explicit RecordRestorer(SweepResults& results, RunMessages* messages = nullptr);
+  // A header checks the config; a run is stored. Returns false when the run was already
+  // restored (a duplicate). Throws InputError naming `where` for a record of another config
+  // (naming a changed map file where that is why) or of a cell, map or planner this sweep lacks.
+  bool restore(const DecodedRecord& record, const std::string& where);
 
  private:
-  // A record's run and map as their slots (the map's is not done when the record has none).
-  static RunSlot slot_of_record(const nlohmann::json& rec, const std::string& where);
-  static MapSlot map_slot_of_record(const nlohmann::json& rec);
-
   std::string config_hash_;
   SweepResults& results_;
+  RunMessages* messages_;
   std::map<std::string, int> cell_index_;
   std::map<std::string, std::size_t> planner_index_;
 };
 
-// Reads every record of `path` into `results` (empty_results of the config). Throws
-// InputError for an unreadable file, a malformed line other than a torn last one, a record
-// without this tool's name and journal version (engine/run_record.h), a record of another
-// config (hash mismatch) or one naming a cell, map or planner this sweep lacks.
-JournalStats restore_journal(const std::string& path, SweepResults& results);
+// Calls `f(record, where)` for every record of the journal at `path` in order, `where` naming
+// file and line. A torn last line (a record a kill cut short, even when it parses) is skipped and
+// counted in the returned torn_lines (records stays 0). Throws InputError for an unreadable file,
+// a malformed line other than a torn last one, or what the decoder refuses (engine/run_record.h).
+JournalStats for_each_journal_record(
+    const std::string& path,
+    const std::function<void(const DecodedRecord&, const std::string&)>& f);
+
+// Reads every record of `path` into `results` (empty_results of the config), and the failure
+// messages into `messages` when given. Throws InputError for what for_each_journal_record
+// refuses, a record of another config (hash mismatch; a changed map file is named) or one
+// naming a cell, map or planner this sweep lacks.
+JournalStats restore_journal(const std::string& path, SweepResults& results,
+                             RunMessages* messages = nullptr);
 
 }  // namespace agv

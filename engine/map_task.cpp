@@ -76,27 +76,28 @@ MapSlot regenerate_map_slot(const MapTaskContext& context, std::int64_t task) {
   return make_task_map(context, task).slot;
 }
 
-nlohmann::json MapTaskRun::record() const {
-  return run_record(context.config_hash, context.config.seed, context.plan.cell_of(task),
-                    context.plan.map_index_of(task), context.config.planners.at(planner), map,
-                    output);
+std::string journal_lines(const MapTaskContext& context, std::int64_t task, const MapFacts& facts,
+                          const std::vector<RecordedRun>& runs) {
+  const SweepCell& cell = context.plan.cell_of(task);
+  const int map_index = context.plan.map_index_of(task);
+  std::string lines = map_record(cell, map_index, facts);
+  for (const RecordedRun& r : runs)
+    lines += run_record(cell, map_index, r.planner, r.slot, r.message, facts);
+  return lines;
 }
 
-nlohmann::json lost_run_record(const MapTaskContext& context, std::int64_t task,
-                               std::size_t planner, const MapSlot& map, Outcome outcome,
-                               const std::string& message, std::int64_t wall_ns) {
-  RunOutput out;
-  out.metrics.fill(std::numeric_limits<double>::quiet_NaN());
-  out.outcome = outcome;
-  out.message = message;
+RunSlot lost_run_slot(Outcome outcome, std::int64_t wall_ns) {
+  RunSlot slot;
+  slot.metrics.fill(std::numeric_limits<double>::quiet_NaN());
+  slot.outcome = outcome;
   // No CPU time of the run survives its process: the parent's wall clock stands in.
-  out.plan_time_ns = wall_ns;
-  return MapTaskRun{context, task, planner, map, out}.record();
+  slot.plan_time_ns = wall_ns;
+  return slot;
 }
 
-MapSlot run_map_task(const MapTaskContext& context, std::int64_t task,
-                     std::span<const std::size_t> planners, MapTaskWorkspace& workspace,
-                     const std::function<void(const MapTaskRun&)>& on_run) {
+MapFacts run_map_task(const MapTaskContext& context, std::int64_t task,
+                      std::span<const std::size_t> planners, MapTaskWorkspace& workspace,
+                      const std::function<void(const MapTaskRun&)>& on_run) {
   const SweepCell& cell = context.plan.cell_of(task);
   const int map_index = context.plan.map_index_of(task);
   const TaskMap map = make_task_map(context, task);
@@ -110,9 +111,9 @@ MapSlot run_map_task(const MapTaskContext& context, std::int64_t task,
     const RunOutput out = run_on_map(*workspace.planners.at(p).planner, ref, context.config.seed,
                                      cell.key, map_index, entry.label, workspace.scratch,
                                      Deadline::after(context.budget), context.config.motion);
-    on_run(MapTaskRun{context, task, p, slot, out});
+    on_run(MapTaskRun{context, task, p, slot, out, ref});
   }
-  return slot;
+  return map_facts_of(slot, ref);
 }
 
 }  // namespace agv

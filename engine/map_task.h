@@ -53,22 +53,32 @@ struct MapTaskRun {
   std::size_t planner;  // config index
   const MapSlot& map;
   const RunOutput& output;
+  const MapReference& reference;  // the task's map and the references its runs computed
 
-  // The run's journal record (engine/run_record.h); built on demand, as an in-process sweep
-  // without a journal needs none.
-  nlohmann::json record() const;
+  // The map's facts as far as the runs so far computed them.
+  MapFacts facts() const { return map_facts_of(map, reference); }
 };
 
-// The record of a run that produced none itself: its worker process died or was killed.
-nlohmann::json lost_run_record(const MapTaskContext& context, std::int64_t task,
-                               std::size_t planner, const MapSlot& map, Outcome outcome,
-                               const std::string& message, std::int64_t wall_ns);
+// A run as a journal records it.
+struct RecordedRun {
+  std::size_t planner;  // config index
+  RunSlot slot;
+  std::string message;
+};
+
+// A map task's journal lines: its map record, then its runs' records (engine/run_record.h).
+std::string journal_lines(const MapTaskContext& context, std::int64_t task, const MapFacts& facts,
+                          const std::vector<RecordedRun>& runs);
+
+// The slot of a run that produced none itself: its worker process died or was killed.
+RunSlot lost_run_slot(Outcome outcome, std::int64_t wall_ns);
 
 // Generates the map of `task`, runs `planners` (config indices) on it in the order given and
-// hands each run to `on_run` as soon as it is done. Returns the map's slot. Throws what the
-// generator throws (a map that cannot be made fails the sweep, not a run).
-MapSlot run_map_task(const MapTaskContext& context, std::int64_t task,
-                     std::span<const std::size_t> planners, MapTaskWorkspace& workspace,
-                     const std::function<void(const MapTaskRun&)>& on_run);
+// hands each run to `on_run` as soon as it is done. Returns the map's facts (its slot and the
+// references the runs computed). Throws what the generator throws (a map that cannot be made
+// fails the sweep, not a run).
+MapFacts run_map_task(const MapTaskContext& context, std::int64_t task,
+                      std::span<const std::size_t> planners, MapTaskWorkspace& workspace,
+                      const std::function<void(const MapTaskRun&)>& on_run);
 
 }  // namespace agv

@@ -14,6 +14,7 @@
 #include "core/rng.h"
 #include "core/str_cat.h"
 #include "core/text_file.h"
+#include "engine/journal.h"
 #include "engine/report.h"
 #include "engine/run_record.h"
 
@@ -349,35 +350,15 @@ std::string report_config_hash(const json& report) {
 }
 
 void read_run_times(const std::string& journal, const std::string& config_hash, RunTimes& times) {
-  require_regular_file(journal, "journal");
-  std::ifstream in(journal, std::ios::binary);
-  if (!in) throw InputError("journal \"" + journal + "\": " + std::strerror(errno));
-  std::string line;
-  std::int64_t line_no = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (in.eof()) break;  // a torn last line: a run resume would redo
-    if (line.empty()) continue;
-    const std::string where = journal + ":" + std::to_string(line_no);
-    const json rec = json::parse(line, nullptr, false);
-    if (rec.is_discarded() || !rec.is_object()) throw InputError(where + ": malformed record");
-    if (rec.value("tool", json()) != kJournalTool ||
-        rec.value("journal_version", json()) != kJournalVersion)
-      throw InputError(where + ": not a record of this agvbench's journal format (tool \"" +
-                       std::string(kJournalTool) + "\", journal_version " +
-                       std::to_string(kJournalVersion) + ")");
-    const std::string hash = rec.value("config_hash", std::string());
-    if (hash != config_hash)
-      throw InputError(where + ": a record of config " + hash +
+  // A torn last line is a run resume would redo: skipped.
+  for_each_journal_record(journal, [&](const DecodedRecord& rec, const std::string& where) {
+    if (rec.kind == DecodedRecord::Kind::map) return;
+    if (rec.config_hash != config_hash)
+      throw InputError(where + ": a record of config " + rec.config_hash +
                        ", not of the report's config (hash " + config_hash + ")");
-    try {
-      times[{rec.at("cell").get<std::string>(), rec.at("planner").get<std::string>()}]
-           [rec.at("map_index").get<int>()] =
-               rec.at("timing").at("plan_time_ns").get<std::int64_t>();
-    } catch (const json::exception& e) {
-      throw InputError(where + ": malformed record (" + e.what() + ")");
-    }
-  }
+    if (rec.kind == DecodedRecord::Kind::run)
+      times[{rec.cell, rec.planner}][rec.map_index] = rec.run.plan_time_ns;
+  });
 }
 
 int ReportComparison::exit_code() const {

@@ -541,19 +541,15 @@ void read_run_messages(const std::string& journal, const SweepResults& results,
   for (const auto& c : results.plan.cells) cells[c.key] = &c;
   std::map<std::string, std::size_t> planners;
   for (std::size_t p = 0; p < results.labels.size(); ++p) planners[results.labels[p]] = p;
-  std::ifstream in(journal, std::ios::binary);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (in.eof()) break;  // a torn last line: not restored, no message either
-    if (line.find("\"message\"") == std::string::npos) continue;
-    const json rec = json::parse(line, nullptr, false);
-    if (rec.is_discarded() || !rec.contains("message")) continue;
-    const auto cell = cells.find(rec.value("cell", std::string()));
-    const auto planner = planners.find(rec.value("planner", std::string()));
-    if (cell == cells.end() || planner == planners.end()) continue;
-    const std::int64_t task = results.plan.task_of(*cell->second, rec.value("map_index", 0));
-    messages.emplace(std::make_pair(task, planner->second), rec.at("message").get<std::string>());
-  }
+  // A torn last line: not restored, no message either.
+  for_each_journal_record(journal, [&](const DecodedRecord& rec, const std::string&) {
+    if (rec.kind != DecodedRecord::Kind::run || rec.message.empty()) return;
+    const auto cell = cells.find(rec.cell);
+    const auto planner = planners.find(rec.planner);
+    if (cell == cells.end() || planner == planners.end()) return;
+    const std::int64_t task = results.plan.task_of(*cell->second, rec.map_index);
+    messages.emplace(std::make_pair(task, planner->second), rec.message);
+  });
 }
 
 }  // namespace agv

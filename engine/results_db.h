@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "engine/journal.h"
 #include "engine/sweep_results.h"
 
 namespace agv {
@@ -18,9 +19,6 @@ namespace agv {
 // meaning of a column. The application id marks the file as agvbench's ("AGVB").
 inline constexpr int kResultsDbVersion = 1;
 inline constexpr std::int32_t kResultsDbApplicationId = 0x41475642;
-
-// A run's failure message, by (map task, planner index): journals carry it, the slots do not.
-using RunMessages = std::map<std::pair<std::int64_t, std::size_t>, std::string>;
 
 struct ExperimentRecord {
   const SweepConfig* config = nullptr;

@@ -43,6 +43,12 @@ class MapReference {
   // The scenario's optimum where the model is the scenario's convention (MovingAI: no corner
   // cutting, clearance 0, octile lengths), so the two lengths measure the same thing.
   std::optional<double> scenario_optimum() const;
+  // The references computed so far, none computed here (the journal's map record keeps them).
+  std::optional<double> known_optimal_length(CornerRule rule) const {
+    const auto r = static_cast<std::size_t>(rule);
+    return known_[r] ? optimal_[r] : std::nullopt;
+  }
+  std::optional<double> known_any_angle_length() const { return any_angle_; }
 
  private:
   const Grid& grid_;

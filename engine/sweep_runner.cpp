@@ -88,11 +88,14 @@ struct SweepState {
       : context(task_context),
         results(sweep_results),
         restorer(sweep_results),
+        header(nlohmann::json::parse(
+            journal_header(task_context.config_hash, task_context.config, task_context.plan))),
         keep_lines(journaled) {}
 
   const MapTaskContext& context;
   SweepResults& results;
   RecordRestorer restorer;  // worker records into slots
+  nlohmann::json header;    // this sweep's journal header: worker replies are decoded under it
   bool keep_lines;          // whether the runs' records become journal lines
   std::atomic<std::int64_t> executed{0};
   std::atomic<bool> cut{false};  // an interruption cut runs short: they are not recorded
@@ -101,13 +104,15 @@ struct SweepState {
 // Runs the task's pending `planners` in this thread; returns their journal lines.
 std::string run_task_in_process(SweepState& s, MapTaskWorkspace& workspace, std::int64_t task,
                                 const std::vector<std::size_t>& planners) {
-  std::string lines;
-  run_map_task(s.context, task, planners, workspace, [&](const MapTaskRun& run) {
-    s.results.store(task, run.planner, run_slot_of(run.output), run.map);
-    ++s.executed;
-    if (s.keep_lines) lines += json_text(run.record()) + '\n';
-  });
-  return lines;
+  std::vector<RecordedRun> recorded;
+  const MapFacts facts =
+      run_map_task(s.context, task, planners, workspace, [&](const MapTaskRun& run) {
+        RunSlot slot = run_slot_of(run.output);
+        if (s.keep_lines) recorded.push_back({run.planner, slot, run.output.message});
+        s.results.store(task, run.planner, std::move(slot), run.map);
+        ++s.executed;
+      });
+  return s.keep_lines ? journal_lines(s.context, task, facts, recorded) : std::string();
 }
 
 // Runs the task's pending planners in this thread's worker process; returns their journal
@@ -116,7 +121,14 @@ std::string run_task_in_process(SweepState& s, MapTaskWorkspace& workspace, std:
 // short is not recorded: the task's remaining planners stay pending for a resume.
 std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard_limit_s,
                               std::int64_t task, const std::vector<std::size_t>& planners) {
-  std::string lines;
+  std::vector<RecordedRun> recorded;
+  MapFacts facts;
+  JournalDecoder decoder;  // this task's: its map's facts accumulate over the replies
+  decoder.decode(s.header, "journal header");
+  const auto lines = [&] {
+    return s.keep_lines && !recorded.empty() ? journal_lines(s.context, task, facts, recorded)
+                                             : std::string();
+  };
   std::size_t next = 0;
   while (next < planners.size()) {
     process.start_task(task, std::span(planners).subspan(next));
@@ -126,24 +138,34 @@ std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard
       WorkerProcess::Reply reply = process.next_run(hard_limit_s);
       if (reply.cut) {
         s.cut = true;
-        return lines;
+        return lines();
       }
       alive = reply.ok;
-      nlohmann::json record;
       if (reply.ok) {
-        record = std::move(reply.record);
+        const nlohmann::json& r = reply.record;
+        if (!r.is_object() || !r.contains("map") || !r.contains("run"))
+          throw std::runtime_error("worker sent a reply without its map and run records");
+        const DecodedRecord map = decoder.decode(r.at("map"), "worker record");
+        DecodedRecord run = decoder.decode(r.at("run"), "worker record");
+        if (map.kind != DecodedRecord::Kind::map || run.kind != DecodedRecord::Kind::run ||
+            run.planner != s.results.labels.at(p) || map.cell != s.context.plan.cell_of(task).key ||
+            map.map_index != s.context.plan.map_index_of(task) || run.map_index != map.map_index)
+          throw std::runtime_error("worker answered with the record of another run");
+        facts = map.map;
+        s.restorer.restore(run, "worker record");
+        recorded.push_back({p, std::move(run.run), std::move(run.message)});
       } else {
         MapSlot& ms = s.results.map(task);
         if (!ms.done) ms = regenerate_map_slot(s.context, task);
-        record =
-            lost_run_record(s.context, task, p, ms, reply.outcome, reply.message, reply.wall_ns);
+        if (!facts.slot.done) facts.slot = ms;
+        RunSlot slot = lost_run_slot(reply.outcome, reply.wall_ns);
+        if (s.keep_lines) recorded.push_back({p, slot, reply.message});
+        s.results.store(task, p, std::move(slot), ms);
       }
-      s.restorer.restore(record, "worker record");
       ++s.executed;
-      if (s.keep_lines) lines += json_text(record) + '\n';
     }
   }
-  return lines;
+  return lines();
 }
 
 // The first failure of any map task: the sweep stops taking tasks and throws it at the end,
@@ -269,8 +291,14 @@ void run_sweep(const SweepConfig& config, SweepResults& res, const SweepOptions&
 
   const bool resume = !options.resume_path.empty();
   const std::string journal_path = journal_path_of(options);
-  if (resume) res.restored_runs = restore_journal(options.resume_path, res).records;
+  JournalStats restored;
+  if (resume) restored = restore_journal(options.resume_path, res);
+  res.restored_runs = restored.records;
   JournalWriter journal(journal_path, resume);
+  // A new journal starts with its header; a resumed one gets one unless its last segment is
+  // already this sweep's (an empty file, a version 1 journal, a header a kill cut short).
+  if (journal.enabled() && !restored.has_header)
+    journal.write(journal_header(res.config_hash, config, res.plan));
 
   res.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism,

@@ -9,7 +9,15 @@ from agvreports.cells import cell_key
 from agvreports.numeric import finite
 from agvreports.report_io import ReportError
 
-JOURNAL_VERSION = 1  # engine/run_record.h kJournalVersion
+JOURNAL_VERSION = 2  # engine/run_record.h kJournalVersion
+JOURNAL_VERSIONS_READ = (1, 2)  # version 1 journals are still read
+
+# The engine's run metrics, in the order a version 2 header must start its metric list with
+# (engine/run_metrics.h kRunMetricNames): the derived ones are rebuilt by position.
+RUN_METRICS = ("path_length", "path_length_m", "waypoints", "turns", "turn_angle_rad",
+               "max_turn_rad", "smoothness_mean", "smoothness_max", "min_clearance",
+               "min_clearance_m", "motion_time_s", "optimality_ratio", "any_angle_ratio",
+               "scen_ratio")
 
 
 class Runs:
@@ -30,21 +38,109 @@ class Runs:
                 if r[1] == "success" and finite(r[2].get(metric))]
 
 
-def _check_version(r, n):
+def _refuse_version(r, n):
     tool, version = r.get("tool"), r.get("journal_version")
-    if tool != "agvbench" or version != JOURNAL_VERSION:
-        raise ReportError(f"line {n}: a record of tool {tool!r}, journal_version {version!r}; "
-                          f"this script reads tool 'agvbench', journal_version {JOURNAL_VERSION} "
-                          "(reports/SCHEMA.md, Per-run records)")
+    raise ReportError(f"line {n}: a record of tool {tool!r}, journal_version {version!r}; "
+                      f"this script reads tool 'agvbench', journal_version {JOURNAL_VERSION} "
+                      f"(and 1) (reports/SCHEMA.md, Per-run records)")
+
+
+def _ratio(length, reference):
+    """engine/run_executor.cpp set_ratio: length / reference, 1 for a zero reference."""
+    if length is None or reference is None:
+        return None
+    if reference > 0:
+        return length / reference
+    return 1.0 if reference == 0 else None
+
+
+def rebuild_derived(m, explicit, facts, cell_edge):
+    """Sets the derived metrics of `m` (name -> float) that `explicit` does not name, exactly as
+    engine/run_record.cpp rebuild_derived_metrics does (the same operations in the same order,
+    so the same doubles). Absent where their inputs are."""
+    def put(name, v):
+        if name not in explicit:
+            if v is None:
+                m.pop(name, None)
+            else:
+                m[name] = v
+    length, turn = m.get("path_length"), m.get("turn_angle_rad")
+    put("path_length_m", length * cell_edge if length is not None else None)
+    put("smoothness_mean", turn / length if turn is not None and length is not None and length > 0 else None)
+    put("min_clearance_m", m["min_clearance"] * cell_edge if m.get("min_clearance") is not None else None)
+    put("optimality_ratio", _ratio(length, facts.get("optimal_length")))
+    put("any_angle_ratio", _ratio(length, facts.get("any_angle_length")))
+    put("scen_ratio", _ratio(length, facts.get("scen_optimum")))
+
+
+def _need(r, key, n, kind=None):
+    if key not in r or (kind is not None and not isinstance(r[key], kind)):
+        raise ReportError(f"line {n}: missing or malformed key '{key}' (not an agvbench --runs-out record)")
+    return r[key]
+
+
+class _Segment:
+    """A version 2 header and the map facts read after it."""
+
+    def __init__(self, h, n):
+        try:
+            self.config_hash = h["config_hash"]
+            self.cells = [(c["cell"], float(c["cell_edge"])) for c in h["cells"]]
+            self.planners = [p["label"] for p in h["planners"]]
+            self.names = [p.get("name", p["label"]) for p in h["planners"]]
+            self.metrics = list(h["metrics"])
+        except (KeyError, TypeError, ValueError):
+            raise ReportError(f"line {n}: a malformed journal header") from None
+        if tuple(self.metrics[:len(RUN_METRICS)]) != RUN_METRICS:
+            raise ReportError(f"line {n}: the header's metric order is not this script's "
+                              "(written by an agvbench that measures other metrics)")
+        self.maps = {}
+
+    def index(self, r, key, table, n):
+        v = r.get(key)
+        if not isinstance(v, int) or isinstance(v, bool) or not 0 <= v < len(table):
+            raise ReportError(f"line {n}: '{key}' {v!r} is not an index of the header's table")
+        return v
+
+    def run(self, r, n):
+        cell = self.index(r, "cell", self.cells, n)
+        key, edge = self.cells[cell]
+        mi = _need(r, "map_index", n, int)
+        m, explicit = {}, set()
+        mask = r.get("mask", 0)
+        values = r.get("metrics", [])
+        if not isinstance(mask, int) or not isinstance(values, list):
+            raise ReportError(f"line {n}: malformed 'mask' or 'metrics'")
+        bits = [b for b in range(64) if mask >> b & 1]
+        if len(bits) != len(values) or (bits and bits[-1] >= len(self.metrics)):
+            raise ReportError(f"line {n}: 'metrics' does not match its 'mask'")
+        for b, v in zip(bits, values):
+            m[self.metrics[b]] = float(v)
+            explicit.add(self.metrics[b])
+        for name, v in (r.get("extra") or {}).items():
+            explicit.add(name)
+            m[name] = None if v is None else float(v)  # null: reported, undefined
+        rebuild_derived(m, explicit, self.maps.get((cell, mi), {}), edge)
+        p = self.index(r, "planner", self.planners, n)
+        return {"planner": self.planners[p], "planner_name": self.names[p], "cell": key,
+                "map_index": mi, "outcome": _need(r, "outcome", n, str), "metrics": m,
+                "timing": {"plan_time_ns": r.get("plan_time_ns"), "phases": r.get("phases", {})},
+                "config_hash": self.config_hash,
+                **({"message": r["message"]} if "message" in r else {})}
 
 
 def journal_records(path):
-    """Yield (line number, record) for each record of RUNS.jsonl, each checked to be an agvbench
-    journal record of this version with the keys every reader needs. Raises ReportError naming
-    the line; OSError and UnicodeDecodeError pass through to the caller."""
+    """Yield (line number, run record) for each run of RUNS.jsonl, version 1 or 2, each in one
+    shape: planner (label), cell (key), map_index, outcome, metrics (name -> value, derived
+    ones rebuilt; a version 1 record's nulls kept), timing {plan_time_ns, phases}, config_hash,
+    message. Raises ReportError naming the line; OSError and UnicodeDecodeError pass through to
+    the caller. A torn last line (no newline: a kill's) is skipped, as the engine does."""
+    segment = None
     with open(path, "r", encoding="utf-8") as f:
-        for n, line in enumerate(f, 1):
-            line = line.strip()
+        for n, raw in enumerate(f, 1):
+            if not raw.endswith("\n"):
+                break  # torn last line
+            line = raw.strip()
             if not line:
                 continue
             try:
@@ -53,17 +149,33 @@ def journal_records(path):
                 raise ReportError(f"line {n}: not valid JSON: {e.msg}") from None
             if not isinstance(r, dict):
                 raise ReportError(f"line {n}: expected a JSON object (an agvbench --runs-out record)")
-            # A record that names its tool or version is judged by them first (another version's
-            # keys may differ); one that names neither, by its keys.
             if "tool" in r or "journal_version" in r:
-                _check_version(r, n)
-            for key in ("planner", "cell", "map_index", "outcome", "metrics"):
-                if key not in r:
-                    raise ReportError(f"line {n}: missing key '{key}' (not an agvbench --runs-out record)")
-            _check_version(r, n)
-            if not isinstance(r["metrics"], dict):
-                raise ReportError(f"line {n}.metrics: expected an object")
-            yield n, r
+                if r.get("tool") != "agvbench" or r.get("journal_version") not in JOURNAL_VERSIONS_READ:
+                    _refuse_version(r, n)
+                if r["journal_version"] == JOURNAL_VERSION:
+                    if r.get("record") != "header":
+                        raise ReportError(f"line {n}: a version 2 record naming its version must be its header")
+                    segment = _Segment(r, n)
+                    continue
+                # A version 1 record: self-contained.
+                for key in ("planner", "cell", "map_index", "outcome", "metrics"):
+                    _need(r, key, n)
+                if not isinstance(r["metrics"], dict):
+                    raise ReportError(f"line {n}.metrics: expected an object")
+                yield n, r
+                continue
+            if segment is None:
+                _refuse_version(r, n)
+            if r.get("record") == "map":
+                cell = segment.index(r, "cell", segment.cells, n)
+                facts = segment.maps.setdefault((cell, _need(r, "map_index", n, int)), {})
+                for k in ("optimal_length", "any_angle_length", "scen_optimum", "obstacle_fraction", "rejections"):
+                    if k in r:
+                        facts[k] = r[k]
+                continue
+            if "record" in r:
+                raise ReportError(f"line {n}: unknown record kind {r['record']!r}")
+            yield n, segment.run(r, n)
 
 
 def config_hash(config):

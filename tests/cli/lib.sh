@@ -1,9 +1,15 @@
 # Shared by the CLI test scripts (sourced): a scratch folder to work in, removed on exit, and
 # pass/fail bookkeeping. `finish NAME` prints the tally and returns non-zero on any failure.
+# `$py "$journal_check" J [N]` checks a journal holds each run once (N of them); a journal's run
+# records are its lines with a "planner" key (`grep -c '"planner":'`), besides its header and
+# per-map records.
 # `"${isolate[@]}"` is --isolate as a sanitized build can run it: sanitizers reserve terabytes of
 # address space for their shadow memory, more than the workers' default cap (RLIMIT_AS) allows,
 # so a sanitized build's ctest sets AGV_ISOLATE_MEMORY_MB (tests/CMakeLists.txt).
 py=/usr/bin/python3
+# A journal's runs decoded, counted and checked for repeats (either journal version).
+journal_check=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/journal_check.py
+export AGV_JOURNAL_CHECK=$journal_check  # for the scripts' Python snippets
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"

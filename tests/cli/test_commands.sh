@@ -27,11 +27,14 @@ cat >rooms4.json <<'JSON'
 JSON
 check "plan --gen-param rebuilds the map a sweep cell produced" sh -c "'$bin' run rooms4.json --out rooms4.report.json --runs-out rooms4.jsonl --quiet && '$bin' plan --generator rooms --gen-param room_size=4 --size 20 --density 0.2 --seed 5 --map-index 1 --json >replay.json && '$bin' plan --generator rooms --size 20 --density 0.2 --seed 5 --map-index 1 --json >default.json && $py -c '
 import json
-rec = [r for r in map(json.loads, open(\"rooms4.jsonl\")) if r.get(\"map_index\") == 1][0]
+recs = [r for r in map(json.loads, open(\"rooms4.jsonl\")) if r.get(\"map_index\") == 1]
+m = [r for r in recs if r.get(\"record\") == \"map\"][0]
+run = [r for r in recs if \"planner\" in r][0]
 mine, other = (json.load(open(f)) for f in (\"replay.json\", \"default.json\"))
 rows = mine[\"map\"][\"rows\"]
-assert abs(sum(r.count(\"@\") for r in rows) / 400 - rec[\"map\"][\"obstacle_fraction\"]) < 1e-12
-assert mine[\"runs\"][0][\"metrics\"][\"path_length\"] == rec[\"metrics\"][\"path_length\"]
+assert abs(sum(r.count(\"@\") for r in rows) / 400 - m[\"obstacle_fraction\"]) < 1e-12
+assert run[\"mask\"] & 1, \"path_length is the first metric of the mask\"
+assert mine[\"runs\"][0][\"metrics\"][\"path_length\"] == run[\"metrics\"][0]
 assert other[\"map\"][\"rows\"] != rows, \"room_size did not reach the generator\"
 '"
 # From the checkout root, as the README runs it: the config's report folder (reports/out/, which

@@ -51,7 +51,7 @@ steps = {d * 20 // total for d in done}
 assert steps >= set(range(1, 21)), sorted(steps)
 assert "\r" not in open("quick.err").read()
 ' "$quick_runs"
-lines=$(wc -l <quick.jsonl)
+lines=$($py "$journal_check" --count quick.jsonl)
 # The report scripts recompute the hash the records carry (reports/agvreports/runs.py): the same
 # as the engine's on a real sweep, floats and planner parameters included.
 check "the report scripts' config hash is the engine's" $py -c "
@@ -62,14 +62,15 @@ from agvreports.runs import config_hash
 want = json.loads(open(sys.argv[3]).readline())['config_hash']
 sys.exit(0 if config_hash(json.load(open(sys.argv[2]))['config']) == want else 1)" "$src" quick.json quick.jsonl
 check "export the quick journal" "$bin" export quick.jsonl --config "$cfg" --sqlite results.db
-check "select count(*) from runs = the journal's line count ($lines)" test "$(q 'select count(*) from runs')" = "$lines"
+check "select count(*) from runs = the journal's run records ($lines)" test "$(q 'select count(*) from runs')" = "$lines"
 check "one experiment, its config hash, date and environment" test "$(q "select count(*) from experiments where name = 'quick' and length(config_hash) = 16 and created_utc like '____-__-__T__:__:__Z' and json_extract(environment_json, '\$.load_average') is not null")" = 1
 check "runs queryable by planner, cell and metric" test "$(q "select count(*) from run_values where planner = 'astar' and cell = 'uniform/32x32/0.1' and metric = 'path_length'")" = "$maps"
 check "every successful run has its path_length" test "$(q "select count(*) from runs r where outcome = 'success' and not exists (select 1 from run_metrics m where m.run_id = r.run_id and m.metric = 'path_length')")" = 0
 check "paired results: every planner but the baseline in every cell" test "$(q "select count(distinct cell_id || '/' || planner_id) from paired where metric = 'path_length'")" = $((24 * 8))
 check "the journal's outcomes by planner, the same in the database" $py -c '
-import json, sqlite3, collections
-j = collections.Counter((r["planner"], r["outcome"]) for r in map(json.loads, open("quick.jsonl")))
+import json, os, sqlite3, subprocess, sys, collections
+runs = subprocess.check_output([sys.executable, os.environ["AGV_JOURNAL_CHECK"], "--dump", "quick.jsonl"], text=True)
+j = collections.Counter((r["planner"], r["outcome"]) for r in map(json.loads, runs.splitlines()))
 db = sqlite3.connect("results.db")
 d = collections.Counter({(p, o): n for p, o, n in db.execute("select p.label, r.outcome, count(*) from runs r join planners p using (experiment_id, planner_id) group by 1, 2")})
 assert j == d, (j, d)

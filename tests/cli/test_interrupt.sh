@@ -24,10 +24,11 @@ JSON
 total=$((2 * 2 * 2 * maps * 3))
 
 # Every record once; no record says the run crashed or hit the hard limit.
-cat >journal_ok.py <<'EOF_PY'
-import collections, json, sys
-records = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
-ids = collections.Counter(r["task_id"] for r in records)
+cat >journal_ok.py <<EOF_PY
+import collections, json, subprocess, sys
+out = subprocess.run(["$py", "$journal_check", "--dump", sys.argv[1]], check=True, capture_output=True, text=True).stdout
+records = [json.loads(l) for l in out.splitlines()]
+ids = collections.Counter((r["cell"], r["map_index"], r["planner"]) for r in records)
 lost = [r["outcome"] for r in records if r["outcome"] in ("crash", "timeout", "oom")]
 print(f"{len(records)} records, {sum(ids.values()) - len(ids)} repeated, lost: {lost[:5]}")
 sys.exit(0 if not lost and len(ids) == len(records) and len(records) >= int(sys.argv[2]) else 1)
@@ -35,7 +36,8 @@ EOF_PY
 incomplete() {
   $py -c "import json,sys; r=json.load(open('$1')); sys.exit(0 if r['complete'] is False else 1)"
 }
-lines() { if [ -e "$1" ]; then wc -l <"$1"; else echo 0; fi; }
+# The run records of a journal (not its header or map records).
+lines() { if [ -e "$1" ]; then grep -c '"planner":' "$1"; else echo 0; fi; }
 
 # Starts `agvbench run ARGS` as a terminal's foreground job: a session and process group of its
 # own (setsid), whose id is written to pgid.txt; `$!` waits for it.

@@ -7,8 +7,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -188,10 +192,11 @@ std::string journal_text(const Scratch& s) {
 
 TEST(JournalWriter, AFileSizeLimitStopsTheSweepAndLeavesItIncomplete) {
   Scratch s("limit");
-  // On one thread the first map's two records are written in one piece: room for them and a
-  // little more, so the second map's write fails part-way.
+  // On one thread the header is written first, then the first map's record and its two runs'
+  // in one piece: room for them and a little more, so the second map's write fails part-way.
   const std::string text = journal_text(s);
-  const std::size_t first_map = text.find('\n', text.find('\n') + 1) + 1;
+  std::size_t first_map = 0;
+  for (int line = 0; line < 4; ++line) first_map = text.find('\n', first_map) + 1;
   const SweepConfig config = small_config();
   SweepOptions options;
   options.threads = 1;
@@ -215,45 +220,298 @@ TEST(JournalWriter, AFileSizeLimitStopsTheSweepAndLeavesItIncomplete) {
   EXPECT_EQ(stats.torn_lines, 1);
 }
 
-TEST(JournalVersion, RecordsCarryTheToolAndTheVersion) {
+TEST(JournalVersion, TheHeaderCarriesTheToolAndTheVersion) {
   Scratch s("carry");
   const std::string text = journal_text(s);
   const json first = json::parse(text.substr(0, text.find('\n')));
   EXPECT_EQ(first.at("tool"), "agvbench");
   EXPECT_EQ(first.at("journal_version"), kJournalVersion);
+  EXPECT_EQ(first.at("record"), "header");
+  EXPECT_EQ(first.at("config_hash"), config_hash(small_config()));
 }
 
 TEST(JournalVersion, RestoreRefusesAForeignOrMissingVersionNamingFileAndLine) {
   Scratch s("foreign");
   const std::string text = journal_text(s);
   const std::size_t second = text.find('\n') + 1;
-  const json record = json::parse(text.substr(second, text.find('\n', second) - second));
+  const json header = json::parse(text.substr(0, second - 1));
   const SweepConfig config = small_config();
   const auto refusal = [&](const json& edited) {
     const std::string path = s.path("edited.jsonl");
-    write_file(path, text.substr(0, second) + edited.dump() + "\n");
+    write_file(path, edited.dump() + "\n" + text.substr(second));
     SweepResults res = empty_results(config);
     return input_error([&] { restore_journal(path, res); });
   };
-  json foreign = record;
+  json foreign = header;
   foreign["journal_version"] = kJournalVersion + 1;
   const std::string newer = refusal(foreign);
-  EXPECT_NE(newer.find("edited.jsonl:2:"), std::string::npos) << newer;
+  EXPECT_NE(newer.find("edited.jsonl:1:"), std::string::npos) << newer;
   EXPECT_NE(newer.find("journal_version " + std::to_string(kJournalVersion + 1)), std::string::npos)
       << newer;
   EXPECT_NE(
       newer.find("reads tool \"agvbench\", journal_version " + std::to_string(kJournalVersion)),
       std::string::npos)
       << newer;
-  json unversioned = record;
+  json unversioned = header;
   unversioned.erase("journal_version");
   unversioned.erase("tool");
   const std::string none = refusal(unversioned);
+  EXPECT_NE(none.find("edited.jsonl:1:"), std::string::npos) << none;
   EXPECT_NE(none.find("tool (none), journal_version (none)"), std::string::npos) << none;
-  json other_tool = record;
+  json other_tool = header;
   other_tool["tool"] = "otherbench";
   EXPECT_NE(refusal(other_tool).find("tool \"otherbench\""), std::string::npos);
-  EXPECT_EQ(refusal(record), "no error");
+  json other_config = header;
+  other_config["config_hash"] = "0123456789abcdef";
+  EXPECT_NE(refusal(other_config).find("edited.jsonl:1: journal was written by a different config"),
+            std::string::npos);
+  EXPECT_EQ(refusal(header), "no error");
+}
+
+// The journal's lines, parsed.
+std::vector<json> journal_lines_of(const std::string& text) {
+  std::vector<json> out;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t end = text.find('\n', at);
+    out.push_back(json::parse(text.substr(at, end - at)));
+    at = end + 1;
+  }
+  return out;
+}
+
+TEST(JournalFormat, AHeaderThenOneRecordPerMapThenItsRunsNothingRepeated) {
+  Scratch s("format");
+  const std::string text = journal_text(s);
+  const std::vector<json> lines = journal_lines_of(text);
+  const SweepConfig config = small_config();
+  ASSERT_FALSE(lines.empty());
+  const json& header = lines[0];
+  EXPECT_EQ(header.at("seed"), config.seed);
+  ASSERT_EQ(header.at("cells").size(), 1U);
+  EXPECT_EQ(header.at("cells")[0].at("cell"), "uniform/16x16/0.1");
+  EXPECT_EQ(header.at("cells")[0].at("size"), json({16, 16}));
+  EXPECT_EQ(header.at("planners").size(), 2U);
+  const auto metrics = header.at("metrics").get<std::vector<std::string>>();
+  EXPECT_EQ(metrics, journal_metric_names());
+  std::size_t maps = 0;
+  std::size_t runs = 0;
+  std::set<std::pair<int, int>> seen_maps;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const json& r = lines[i];
+    EXPECT_FALSE(r.contains("tool") || r.contains("journal_version") || r.contains("config_hash"))
+        << r;
+    if (r.value("record", "") == "map") {
+      ++maps;
+      EXPECT_TRUE(r.contains("obstacle_fraction") && r.contains("rejections")) << r;
+      EXPECT_TRUE(r.contains("optimal_length")) << "the successful runs computed it: " << r;
+      EXPECT_TRUE(seen_maps.insert({r.at("cell").get<int>(), r.at("map_index").get<int>()}).second)
+          << "one map record per map: " << r;
+      continue;
+    }
+    ++runs;
+    // The map's record comes first, in the same write.
+    EXPECT_TRUE(seen_maps.count({r.at("cell").get<int>(), r.at("map_index").get<int>()})) << r;
+    for (const char* key : {"task_id", "seed", "generator", "size", "density", "map", "timing",
+                            "planner_name", "config_hash"})
+      EXPECT_FALSE(r.contains(key)) << key << " in " << r;
+    ASSERT_EQ(r.at("outcome"), "success") << r;
+    const auto mask = r.at("mask").get<std::uint64_t>();
+    const json& values = r.at("metrics");
+    std::size_t next = 0;
+    for (std::size_t bit = 0; bit < metrics.size(); ++bit) {
+      if ((mask >> bit & 1) == 0) continue;
+      const json& v = values.at(next++);
+      const std::string& name = metrics[bit];
+      // Rebuilt by the reader: never written.
+      for (const char* derived : {"path_length_m", "min_clearance_m", "smoothness_mean",
+                                  "optimality_ratio", "any_angle_ratio", "scen_ratio"})
+        EXPECT_NE(name, derived);
+      if (name == "waypoints" || name == "turns" || name == "collision_checks" ||
+          name == "search_expansions") {
+        EXPECT_TRUE(v.is_number_integer()) << name << " " << v;
+      }
+    }
+    EXPECT_EQ(next, values.size());
+    EXPECT_EQ(text.find("null"), std::string::npos);
+  }
+  EXPECT_EQ(maps, 6U);
+  EXPECT_EQ(runs, 12U);
+}
+
+// Every slot of `a` equals `b`'s bit for bit (metrics, time, phases and extras by name).
+void expect_same_slots(const SweepResults& a, const SweepResults& b) {
+  for (std::int64_t t = 0; t < a.plan.map_tasks(); ++t) {
+    EXPECT_EQ(a.map(t).done, b.map(t).done);
+    EXPECT_EQ(a.map(t).rejections, b.map(t).rejections);
+    EXPECT_EQ(a.map(t).obstacle_fraction, b.map(t).obstacle_fraction);
+    for (std::size_t p = 0; p < a.labels.size(); ++p) {
+      const RunSlot& x = a.run(t, p);
+      const RunSlot& y = b.run(t, p);
+      ASSERT_EQ(x.done, y.done) << t << " " << p;
+      EXPECT_EQ(x.outcome, y.outcome);
+      EXPECT_EQ(x.plan_time_ns, y.plan_time_ns);
+      for (std::size_t m = 0; m < x.metrics.size(); ++m) {
+        std::uint64_t bx = 0;
+        std::uint64_t by = 0;
+        std::memcpy(&bx, &x.metrics[m], sizeof bx);
+        std::memcpy(&by, &y.metrics[m], sizeof by);
+        if (!(std::isnan(x.metrics[m]) && std::isnan(y.metrics[m]))) {
+          EXPECT_EQ(bx, by) << kRunMetricNames[m] << " " << x.metrics[m] << " " << y.metrics[m];
+        }
+      }
+      std::map<std::string, double> ex(x.extra.begin(), x.extra.end());
+      std::map<std::string, double> ey(y.extra.begin(), y.extra.end());
+      EXPECT_EQ(ex, ey);
+      std::map<std::string, std::int64_t> px;
+      std::map<std::string, std::int64_t> py;
+      for (const auto& ph : x.phases) px[ph.name] = ph.ns;
+      for (const auto& ph : y.phases) py[ph.name] = ph.ns;
+      EXPECT_EQ(px, py);
+    }
+  }
+}
+
+TEST(JournalFormat, RestoredSlotsEqualTheRunsBitForBit) {
+  Scratch s("exact");
+  // Planners with extras, failures with messages and a scenario of many metrics.
+  const SweepConfig config =
+      parse_config(json{{"name", "exact"},
+                        {"generators", {"uniform", "maze"}},
+                        {"sizes", {16, 24}},
+                        {"densities", {0.1, 0.3}},
+                        {"maps_per_cell", 3},
+                        {"planners",
+                         {"astar",
+                          "hma_star",
+                          "prm",
+                          "aco",
+                          {{"name", "rrt"}, {"params", {{"max_iterations", 40}}}}}},
+                        {"report", "unused.json"}});
+  SweepOptions options;
+  options.threads = 2;
+  options.runs_path = s.path("j.jsonl");
+  const SweepResults ran = run_sweep(config, options);
+  SweepResults restored = empty_results(config);
+  RunMessages messages;
+  const JournalStats stats = restore_journal(options.runs_path, restored, &messages);
+  EXPECT_EQ(stats.records, coverage_of(ran).runs_present);
+  EXPECT_TRUE(stats.has_header);
+  expect_same_slots(ran, restored);
+  EXPECT_FALSE(messages.empty()) << "rrt's limit failures carry their message";
+  EXPECT_EQ(deterministic_part(build_report(config, ran)),
+            deterministic_part(build_report(config, restored)));
+}
+
+TEST(JournalFormat, AResumeAfterATornLineAppendsTheRestAndGivesTheSameReport) {
+  Scratch s("torn");
+  const std::string text = journal_text(s);
+  const SweepConfig config = small_config();
+  SweepResults whole = empty_results(config);
+  restore_journal(s.path("source.jsonl"), whole);
+  // The header, two maps' writes and half of a line of the third.
+  std::size_t cut = 0;
+  for (int line = 0; line < 7; ++line) cut = text.find('\n', cut) + 1;
+  cut += 20;
+  const std::string path = s.path("resumed.jsonl");
+  write_file(path, text.substr(0, cut));
+  SweepOptions options;
+  options.threads = 2;
+  options.resume_path = path;
+  const SweepResults resumed = run_sweep(config, options);
+  EXPECT_EQ(resumed.restored_runs, 4);
+  const std::string after = read_file(path);
+  EXPECT_EQ(after.substr(0, cut - 20), text.substr(0, cut - 20)) << "the torn line is cut";
+  std::size_t headers = 0;
+  std::size_t runs = 0;
+  for (const json& r : journal_lines_of(after)) {
+    headers += r.contains("journal_version") ? 1 : 0;
+    runs += r.contains("planner") ? 1 : 0;
+  }
+  EXPECT_EQ(headers, 1U) << "a resume appends to the header it found";
+  EXPECT_EQ(runs, 12U);
+  SweepResults again = empty_results(config);
+  restore_journal(path, again);
+  EXPECT_EQ(deterministic_part(build_report(config, resumed)),
+            deterministic_part(build_report(config, whole)));
+  EXPECT_EQ(deterministic_part(build_report(config, again)),
+            deterministic_part(build_report(config, whole)));
+}
+
+TEST(JournalFormat, AVersion1JournalIsReadAndResumedWithAVersion2Segment) {
+  // tests/data/journal_v1: a version 1 journal of its config, written by agvbench at e70d28e.
+  Scratch s("v1");
+  const std::string dir = std::string(AGV_SOURCE_DIR) + "/tests/data/journal_v1/";
+  const SweepConfig config = load_config(dir + "config.json");
+  const SweepResults fresh = run_sweep(config, {});
+  const json want = deterministic_part(build_report(config, fresh));
+  SweepResults merged = empty_results(config);
+  RunMessages messages;
+  const JournalStats stats = restore_journal(dir + "journal.jsonl", merged, &messages);
+  EXPECT_EQ(stats.records, 36);
+  EXPECT_FALSE(stats.has_header);
+  EXPECT_EQ(messages.size(), 12U);
+  EXPECT_EQ(deterministic_part(build_report(config, merged)), want);
+  // Resumed: the rest is appended after a version 2 header; the file reads back whole.
+  const std::string v1 = read_file(dir + "journal.jsonl");
+  std::size_t cut = 0;
+  for (int line = 0; line < 20; ++line) cut = v1.find('\n', cut) + 1;
+  const std::string path = s.path("v1.jsonl");
+  write_file(path, v1.substr(0, cut));
+  SweepOptions options;
+  options.resume_path = path;
+  const SweepResults resumed = run_sweep(config, options);
+  EXPECT_EQ(resumed.restored_runs, 20);
+  EXPECT_EQ(deterministic_part(build_report(config, resumed)), want);
+  SweepResults again = empty_results(config);
+  EXPECT_EQ(restore_journal(path, again).records, 36);
+  EXPECT_EQ(deterministic_part(build_report(config, again)), want);
+}
+
+TEST(JournalFormat, AMalformedRecordIsRefusedNamingFileAndLine) {
+  Scratch s("malformed");
+  const std::string text = journal_text(s);
+  const std::vector<json> lines = journal_lines_of(text);
+  const SweepConfig config = small_config();
+  // Line `n` (1-based) replaced by `edited`.
+  const auto refusal = [&](std::size_t n, const json& edited) {
+    std::string out;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      out += (i + 1 == n ? edited : lines[i]).dump() + "\n";
+    const std::string path = s.path("edited.jsonl");
+    write_file(path, out);
+    SweepResults res = empty_results(config);
+    return input_error([&] { restore_journal(path, res); });
+  };
+  json run = lines[2];
+  ASSERT_TRUE(run.contains("planner"));
+  json fewer = run;
+  fewer["metrics"].erase(fewer["metrics"].size() - 1);
+  EXPECT_NE(refusal(3, fewer).find("edited.jsonl:3: \"metrics\" holds fewer values than its mask"),
+            std::string::npos);
+  json cell = run;
+  cell["cell"] = 7;
+  EXPECT_NE(refusal(3, cell).find("edited.jsonl:3: \"cell\" 7 is not an index of the header's"),
+            std::string::npos);
+  json kind = lines[1];
+  kind["record"] = "mystery";
+  EXPECT_NE(refusal(2, kind).find("edited.jsonl:2: unknown record kind \"mystery\""),
+            std::string::npos);
+  json outcome = run;
+  outcome["outcome"] = "splendid";
+  EXPECT_NE(refusal(3, outcome).find("edited.jsonl:3: unknown outcome"), std::string::npos);
+  json no_time = run;
+  no_time.erase("plan_time_ns");
+  EXPECT_NE(refusal(3, no_time).find("edited.jsonl:3: malformed journal record"),
+            std::string::npos);
+  // A run record without a header before it.
+  const std::string path = s.path("headless.jsonl");
+  write_file(path, text.substr(text.find('\n') + 1));
+  SweepResults res = empty_results(config);
+  EXPECT_NE(input_error([&] {
+              restore_journal(path, res);
+            }).find("headless.jsonl:1: not a record of this agvbench's journal format"),
+            std::string::npos);
 }
 
 // A process id that is no longer alive: a child that has exited and been reaped.

@@ -91,12 +91,27 @@ TEST(Sweep, RecordsOnePerRunWithReplayFields) {
   std::string line;
   std::size_t n = 0;
   std::set<std::string> ids;
+  json header;
   while (std::getline(in, line)) {
     const json rec = json::parse(line);
-    for (const char* key : {"task_id", "planner", "generator", "size", "density", "map_index",
-                            "seed", "outcome", "metrics", "timing"})
+    if (header.is_null()) {
+      // The header first: what replays a run (seed, cells with generator, size and density,
+      // planner labels) is there once.
+      header = rec;
+      for (const char* key :
+           {"tool", "journal_version", "config_hash", "seed", "cells", "planners"})
+        EXPECT_TRUE(rec.contains(key)) << key;
+      continue;
+    }
+    if (rec.value("record", "") == "map") continue;
+    for (const char* key : {"cell", "planner", "map_index", "outcome", "plan_time_ns", "phases"})
       EXPECT_TRUE(rec.contains(key)) << key;
-    ids.insert(rec["task_id"].get<std::string>());
+    const json& cell = header.at("cells").at(rec.at("cell").get<std::size_t>());
+    for (const char* key : {"cell", "generator", "size", "density"})
+      EXPECT_TRUE(cell.contains(key)) << key;
+    ids.insert(task_id(header.at("config_hash"), plan_sweep(config).cells.at(rec.at("cell")),
+                       rec.at("map_index"),
+                       header.at("planners").at(rec.at("planner").get<std::size_t>()).at("label")));
     ++n;
   }
   const auto expected = static_cast<std::size_t>(scheduled_runs(config, plan_sweep(config)));

@@ -256,7 +256,7 @@ with open(badclaims, "w") as f:
     json.dump({"claims": [{"id": "x"}]}, f)
 badruns = os.path.join(work, "bad.jsonl")
 with open(badruns, "w") as f:
-    f.write('{"planner": "astar"}\n')
+    f.write('{"tool": "agvbench", "journal_version": 1, "planner": "astar"}\n')
 bad("not JSON", [notjson], "not valid JSON")
 bad("old schema", [old], "schema_version is 0")
 bad("no schema_version", [nokey], "schema_version")
@@ -270,7 +270,7 @@ with open(nosetup, "w") as f:
     json.dump(doc, f)
 bad("claim without a random set-up", [p1], "setup", claims=nosetup)
 bad("runs first", [r1], "must follow the report")
-bad("bad runs", [p1, badruns], "missing key 'cell'")
+bad("bad runs", [p1, badruns], "key 'cell'")
 foreign = os.path.join(work, "foreign.jsonl")
 with open(foreign, "w") as f:
     f.write('{"tool": "agvbench", "journal_version": 0, "planner": "astar", "cell": "c", '

@@ -9,9 +9,9 @@
 
 #include "cli/command.h"
 #include "cli/option_checks.h"
+#include "cli/report_file.h"
 #include "core/input_error.h"
 #include "core/json_text.h"
-#include "core/text_file.h"
 #include "engine/report_compare.h"
 
 namespace agv {
@@ -31,15 +31,6 @@ struct CompareCommand {
 
 // compare --fail-on-regression: percent of planning time.
 constexpr NumberRange kRegressionPctRange{0.0, 1e6};
-
-nlohmann::json read_report(const std::string& path, const std::string& what) {
-  const std::string text = read_text_file(path, what);
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(what + " \"" + path + "\": malformed JSON (" + e.what() + ")");
-  }
-}
 
 int command_compare(const CompareCommand& cmd) {
   if (cmd.runs_before.empty() != cmd.runs_after.empty())

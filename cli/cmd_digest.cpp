@@ -6,8 +6,7 @@
 #include <vector>
 
 #include "cli/command.h"
-#include "core/input_error.h"
-#include "core/text_file.h"
+#include "cli/report_file.h"
 #include "engine/report_digest.h"
 
 namespace agv {
@@ -18,15 +17,8 @@ int command_digest(const std::vector<std::string>& paths) {
   // Every report is read and checked before a line is printed: one bad file, no partial list.
   std::vector<std::string> lines;
   for (const auto& path : paths) {
-    const std::string name = "REPORT \"" + path + "\"";
-    const std::string text = read_text_file(path, "REPORT");
-    nlohmann::json report;
-    try {
-      report = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-      throw InputError(name + ": malformed JSON (" + e.what() + ")");
-    }
-    lines.push_back(report_digest(report, name) + "  " + path);
+    const nlohmann::json report = read_report(path, "REPORT");
+    lines.push_back(report_digest(report, "REPORT \"" + path + "\"") + "  " + path);
   }
   for (const auto& line : lines) std::cout << line << "\n";
   return 0;

@@ -236,20 +236,14 @@ WorkerProcess::Reply WorkerProcess::next_run(double hard_limit_s) {
   const auto start = Clock::now();
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                     std::chrono::duration<double>(hard_limit_s));
-  std::string line;
-  const ReadStatus status = read_line(deadline, line);
+  // The reply's two lines, under one deadline.
+  ReadStatus status = read_line(deadline, reply.map_line);
+  if (status == ReadStatus::line) status = read_line(deadline, reply.run_line);
   reply.wall_ns =
       std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
   switch (status) {
     case ReadStatus::line:
-      reply.record = nlohmann::json::parse(line, nullptr, false);
-      if (!reply.record.is_discarded()) {
-        reply.ok = true;
-        return reply;
-      }
-      reply.outcome = Outcome::crash;
-      reply.message = "worker sent a malformed record";
-      stop();
+      reply.ok = true;
       return reply;
     case ReadStatus::timeout:
       stop();
@@ -316,18 +310,16 @@ class Channel {
   std::string buffer_;
 };
 
-// A run's reply: {"map": MAP_RECORD, "run": RUN_RECORD} (engine/run_record.h), the map record
-// with the references computed so far, which the run record's rebuilt metrics divide by.
+// A run's reply: its map record, then its run record (engine/run_record.h), two journal lines;
+// the map record holds the references computed so far, which the run record's rebuilt metrics
+// divide by.
 std::string worker_reply(const MapTaskRun& run) {
   const SweepCell& cell = run.context.plan.cell_of(run.task);
   const int map_index = run.context.plan.map_index_of(run.task);
   const MapFacts facts = run.facts();
-  std::string map = map_record(cell, map_index, facts);
-  std::string record =
-      run_record(cell, map_index, run.planner, run_slot_of(run.output), run.output.message, facts);
-  map.pop_back();  // the newlines
-  record.pop_back();
-  return "{\"map\":" + map + ",\"run\":" + record + "}\n";
+  return map_record(cell, map_index, facts) +
+         run_record(cell, map_index, run.planner, run_slot_of(run.output), run.output.message,
+                    facts);
 }
 
 // The task loop: each request's runs sent back as they finish; 2 on a malformed request.

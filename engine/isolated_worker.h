@@ -8,8 +8,9 @@
 // as run ({"config": ...}) once, and the worker answers {"ready": true}, or {"fatal": message}
 // when it cannot take that config (a failed sweep, not a crashed run); then the parent requests
 // map tasks, {"task": t, "planners": [p, ...]}, and the worker runs them with the in-process
-// runner's own run_map_task (engine/map_task.h), answering with each run's record
-// (engine/run_record.h) as soon as the run is done. The parent gives every run its own hard
+// runner's own run_map_task (engine/map_task.h), answering as soon as each run is done with the
+// two journal lines of it, its map record and its run record (engine/run_record.h): the channel
+// speaks the journal's format, decoded by the journal's one decoder. The parent gives every run its own hard
 // limit; after a fault it starts a fresh worker on the task's remaining planners. Workers are
 // started with posix_spawn, which is safe from a multi-threaded parent (no fork of a process
 // holding other threads' locks).
@@ -56,8 +57,9 @@ class WorkerProcess {
   WorkerProcess& operator=(const WorkerProcess&) = delete;
 
   struct Reply {
-    bool ok = false;  // record holds the worker's record
-    nlohmann::json record;
+    bool ok = false;  // the worker's records of the run, decoded by the caller
+    std::string map_line;
+    std::string run_line;
     Outcome outcome = Outcome::crash;  // when !ok: timeout or crash
     // When !ok: an interruption ended the run (see above), so it has no outcome to record.
     bool cut = false;
@@ -70,6 +72,8 @@ class WorkerProcess {
   // The reply of the task's next run, within hard_limit_s of this call. A reply that is not ok
   // leaves no worker: the task's remaining planners need start_task again.
   Reply next_run(double hard_limit_s);
+  // Kills the worker (its group) and reaps it; the next start_task starts a fresh one.
+  void stop();
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -80,7 +84,6 @@ class WorkerProcess {
   // The worker's next line, unless the deadline passes, the worker's stdout closes or
   // cut_short is set first.
   ReadStatus read_line(Clock::time_point deadline, std::string& line);
-  void stop();  // kill and reap
   // Reaps the exited worker; `interrupted` tells whether a signal that asks a process to stop
   // (not a fault) ended it.
   std::string describe_exit(bool& interrupted);

@@ -144,10 +144,7 @@ JournalStats for_each_journal_record(
     const std::string where = path + ":" + std::to_string(line_no);
     // Records are written whole, newline included: a complete line that does not parse is a
     // damaged journal, not a kill's doing.
-    const json rec = json::parse(line, nullptr, false);
-    if (rec.is_discarded() || !rec.is_object())
-      throw InputError(where + ": malformed journal record");
-    const DecodedRecord decoded = decoder.decode(rec, where);
+    const DecodedRecord decoded = decoder.decode_line(line, where);
     stats.has_header = decoded.kind == DecodedRecord::Kind::header ||
                        (stats.has_header && decoded.version != kJournalVersionV1);
     f(decoded, where);
@@ -182,10 +179,8 @@ void refuse_changed_map_files(const std::string& path, const SweepResults& resul
     while (std::getline(in, line)) {
       ++line_no;
       if (in.eof()) break;
-      const json rec = json::parse(line, nullptr, false);
-      if (rec.is_discarded() || !rec.is_object()) continue;
       const std::string where = path + ":" + std::to_string(line_no);
-      const DecodedRecord d = decoder.decode(rec, where);
+      const DecodedRecord d = decoder.decode_line(line, where);
       if (d.kind == DecodedRecord::Kind::header) {
         for (const auto& c : decoder.header()->cells)
           if (!c.content_hash.empty()) check(c.key, c.content_hash, where);

@@ -311,6 +311,12 @@ std::string run_record(const SweepCell& cell, int map_index, std::size_t planner
 
 // --- reading ---------------------------------------------------------------------------------
 
+DecodedRecord JournalDecoder::decode_line(std::string_view line, const std::string& where) {
+  const json rec = json::parse(line, nullptr, false);
+  if (rec.is_discarded()) throw InputError(where + ": malformed journal record");
+  return decode(rec, where);
+}
+
 DecodedRecord JournalDecoder::decode(const json& rec, const std::string& where) {
   try {
     if (!rec.is_object()) throw InputError(where + ": malformed journal record");

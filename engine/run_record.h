@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/metrics.h"
@@ -110,11 +111,14 @@ struct DecodedRecord {
 // version, a version 2 record before any header, or a malformed record.
 class JournalDecoder {
  public:
-  DecodedRecord decode(const nlohmann::json& record, const std::string& where);
+  // One record line (without its newline): the one place a record's JSON is parsed, whether it
+  // comes from a journal, an isolated worker's channel or a test.
+  DecodedRecord decode_line(std::string_view line, const std::string& where);
   // The current segment's header (nullptr before the first).
   const JournalHeader* header() const { return header_ ? &*header_ : nullptr; }
 
  private:
+  DecodedRecord decode(const nlohmann::json& record, const std::string& where);
   DecodedRecord decode_header(const nlohmann::json& record, const std::string& where);
   DecodedRecord decode_map(const nlohmann::json& record, const std::string& where);
   DecodedRecord decode_run(const nlohmann::json& record, const std::string& where);

@@ -88,14 +88,13 @@ struct SweepState {
       : context(task_context),
         results(sweep_results),
         restorer(sweep_results),
-        header(nlohmann::json::parse(
-            journal_header(task_context.config_hash, task_context.config, task_context.plan))),
+        header(journal_header(task_context.config_hash, task_context.config, task_context.plan)),
         keep_lines(journaled) {}
 
   const MapTaskContext& context;
   SweepResults& results;
   RecordRestorer restorer;  // worker records into slots
-  nlohmann::json header;    // this sweep's journal header: worker replies are decoded under it
+  std::string header;       // this sweep's journal header: worker replies are decoded under it
   bool keep_lines;          // whether the runs' records become journal lines
   std::atomic<std::int64_t> executed{0};
   std::atomic<bool> cut{false};  // an interruption cut runs short: they are not recorded
@@ -115,6 +114,23 @@ std::string run_task_in_process(SweepState& s, MapTaskWorkspace& workspace, std:
   return s.keep_lines ? journal_lines(s.context, task, facts, recorded) : std::string();
 }
 
+// A worker's reply decoded, or nullopt when its lines are not records (the worker is stopped and
+// the run recorded as a crash, as when it dies: whatever garbled them was in that process).
+std::optional<std::pair<DecodedRecord, DecodedRecord>> decode_reply(JournalDecoder& decoder,
+                                                                    WorkerProcess::Reply& reply,
+                                                                    WorkerProcess& process) {
+  try {
+    DecodedRecord map = decoder.decode_line(reply.map_line, "worker record");
+    DecodedRecord run = decoder.decode_line(reply.run_line, "worker record");
+    return std::make_pair(std::move(map), std::move(run));
+  } catch (const InputError& e) {
+    process.stop();
+    reply.outcome = Outcome::crash;
+    reply.message = std::string("worker sent a malformed record: ") + e.what();
+    return std::nullopt;
+  }
+}
+
 // Runs the task's pending planners in this thread's worker process; returns their journal
 // lines. A run the worker does not answer (it hung, died or sent garbage) is recorded here with
 // its outcome, and a fresh worker takes the task's remaining planners. A run an interruption cut
@@ -124,7 +140,7 @@ std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard
   std::vector<RecordedRun> recorded;
   MapFacts facts;
   JournalDecoder decoder;  // this task's: its map's facts accumulate over the replies
-  decoder.decode(s.header, "journal header");
+  decoder.decode_line(s.header, "journal header");
   const auto lines = [&] {
     return s.keep_lines && !recorded.empty() ? journal_lines(s.context, task, facts, recorded)
                                              : std::string();
@@ -140,13 +156,11 @@ std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard
         s.cut = true;
         return lines();
       }
-      alive = reply.ok;
-      if (reply.ok) {
-        const nlohmann::json& r = reply.record;
-        if (!r.is_object() || !r.contains("map") || !r.contains("run"))
-          throw std::runtime_error("worker sent a reply without its map and run records");
-        const DecodedRecord map = decoder.decode(r.at("map"), "worker record");
-        DecodedRecord run = decoder.decode(r.at("run"), "worker record");
+      std::optional<std::pair<DecodedRecord, DecodedRecord>> records;
+      if (reply.ok) records = decode_reply(decoder, reply, process);
+      alive = records.has_value();
+      if (records) {
+        auto& [map, run] = *records;
         if (map.kind != DecodedRecord::Kind::map || run.kind != DecodedRecord::Kind::run ||
             run.planner != s.results.labels.at(p) || map.cell != s.context.plan.cell_of(task).key ||
             map.map_index != s.context.plan.map_index_of(task) || run.map_index != map.map_index)

@@ -305,6 +305,31 @@ TEST(Isolation, WorkerThatCannotStartFailsTheSweep) {
       << refused;
 }
 
+// A worker whose replies are not records (here a script: ready, then two lines of garbage a run)
+// costs each run a crash with the reason in its journal record; the sweep goes on.
+TEST(Isolation, AGarbledReplyIsACrashOfItsRun) {
+  const SweepConfig config = faulty_config({});
+  SweepOptions o = isolated(10.0);
+  o.isolation.command = {"/bin/sh", "-c",
+                         "read config; echo '{\"ready\": true}'; "
+                         "while read request; do echo 'not a record'; echo '{}'; done"};
+  const std::string journal =
+      (std::filesystem::temp_directory_path() / ("agv_garbled_" + std::to_string(::getpid())))
+          .string();
+  o.runs_path = journal;
+  const SweepResults r = run_sweep(config, o);
+  EXPECT_TRUE(r.complete);
+  for (std::size_t p = 0; p < config.planners.size(); ++p)
+    EXPECT_EQ(outcomes(r, p)[static_cast<int>(Outcome::crash)], 4);
+  std::ifstream in(journal);
+  std::string line;
+  int garbled = 0;
+  while (std::getline(in, line))
+    if (line.find("worker sent a malformed record") != std::string::npos) ++garbled;
+  EXPECT_EQ(garbled, 8);
+  std::filesystem::remove(journal);
+}
+
 }  // namespace
 }  // namespace agv
 

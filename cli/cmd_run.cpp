@@ -7,20 +7,23 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <tuple>
 
 #include "cli/cli_numbers.h"
 #include "cli/command.h"
 #include "cli/locate_config.h"
 #include "cli/option_checks.h"
-#include "cli/progress.h"
+#include "cli/progress_sink.h"
 #include "cli/run_count.h"
 #include "engine/config_loader.h"
 #include "engine/environment.h"
 #include "engine/files_read.h"
 #include "engine/journal.h"
 #include "engine/output_paths.h"
+#include "engine/database_sink.h"
 #include "engine/report.h"
+#include "engine/report_sink.h"
 #include "engine/results_db.h"
 #include "engine/sweep_runner.h"
 
@@ -100,39 +103,6 @@ void check_run_paths(const RunCommand& cmd, const std::string& config_path,
   ignore_file_size_signal();
 }
 
-// The report, also when the journal failed (then a failure of both is named in one message).
-void write_report(const SweepConfig& config, const SweepResults& results) {
-  try {
-    write_json_atomic(build_report(config, results), config.report_path);
-  } catch (const std::runtime_error& e) {
-    if (results.journal_error.empty()) throw;
-    throw std::runtime_error(results.journal_error + "; and the report: " + e.what());
-  }
-}
-
-// run --db: the sweep as one experiment of the database, with the failure messages of its
-// journal when it wrote one (the slots keep no messages).
-void write_database(const RunCommand& cmd, const SweepConfig& config, const SweepResults& results,
-                    const std::string& journal) {
-  RunMessages messages;
-  if (!journal.empty()) read_run_messages(journal, results, messages);
-  const nlohmann::json report = build_report(config, results);
-  const std::int64_t id = append_experiment(cmd.db, {&config, &results, &report, &messages, "run",
-                                                     environment_json(results.threads), "--db"});
-  if (!cmd.quiet)
-    std::fprintf(stderr, "agvbench: experiment %lld of %s\n", static_cast<long long>(id),
-                 cmd.db.c_str());
-}
-
-// The sweep's progress callback drawing `meter`, made at its first call (which gives the total).
-SweepProgress meter_progress(std::unique_ptr<ProgressMeter>& meter) {
-  return [&meter, reported = std::int64_t{0}](std::int64_t done, std::int64_t total) mutable {
-    if (!meter) meter = std::make_unique<ProgressMeter>(total, true);
-    meter->advance(done - reported);
-    reported = done;
-  };
-}
-
 // oneTBB runs a sweep on at most its default concurrency (the CPUs this process may use), however
 // many threads are asked for; the report and summary give the number that ran.
 int threads_that_run(int asked) {
@@ -180,7 +150,7 @@ std::string journal_of(const SweepOptions& options) {
   return options.resume_path.empty() ? options.runs_path : options.resume_path;
 }
 
-int journal_failed(const SweepConfig& config, const SweepResults& results,
+int sink_failed(const SweepConfig& config, const SweepResults& results,
                    const SweepOptions& options) {
   // The runs the journal lost are not in the report either: a resume runs them again.
   const Coverage coverage = coverage_of(results);
@@ -188,7 +158,7 @@ int journal_failed(const SweepConfig& config, const SweepResults& results,
                "agvbench: failed: %s; the sweep stopped with %lld of %lld runs recorded; "
                "report (marked incomplete): %s; once the cause is fixed, continue with "
                "--resume %s\n",
-               results.journal_error.c_str(), static_cast<long long>(coverage.runs_present),
+               results.sink_error.c_str(), static_cast<long long>(coverage.runs_present),
                static_cast<long long>(coverage.runs_expected), config.report_path.c_str(),
                journal_of(options).c_str());
   return 1;
@@ -231,19 +201,23 @@ int command_run(const RunCommand& cmd) {
   SweepOptions options = run_options(cmd, config_path, config);
   install_stop_handlers();
   SweepResults results = empty_results(config);
-  std::unique_ptr<ProgressMeter> meter;
+  // The sinks (engine/sweep_sink.h) after the journal: the report, then the database that reads
+  // it, then the progress display.
+  ReportSink report(config, config.report_path);
+  std::optional<DatabaseSink> database;
+  ProgressSink progress;
+  options.sinks.push_back(&report);
+  if (!cmd.db.empty()) options.sinks.push_back(&database.emplace(config, cmd.db, "--db", report));
   if (!cmd.quiet) {
     std::fprintf(stderr, "agvbench: sweep \"%s\": %s\n", config.name.c_str(),
                  run_count_text(config, results.plan).c_str());
-    options.progress = meter_progress(meter);
+    options.sinks.push_back(&progress);
   }
   run_sweep(config, results, options);
-  if (meter) meter->finish();
-  write_report(config, results);
-  // An interrupted sweep is not appended: its resume is (the same runs and more).
-  if (!cmd.db.empty() && results.journal_error.empty() && !results.interrupted)
-    write_database(cmd, config, results, journal_of(options));
-  if (!results.journal_error.empty()) return journal_failed(config, results, options);
+  if (database && database->experiment_id() && !cmd.quiet)
+    std::fprintf(stderr, "agvbench: experiment %lld of %s\n",
+                 static_cast<long long>(*database->experiment_id()), cmd.db.c_str());
+  if (!results.sink_error.empty()) return sink_failed(config, results, options);
   if (results.interrupted) return interrupted(cmd, config, results, options);
   if (!cmd.quiet) print_summary(config, results);
   return 0;

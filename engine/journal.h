@@ -16,14 +16,15 @@
 #include <vector>
 
 #include "engine/run_record.h"
+#include "engine/sink_error.h"
 #include "engine/sweep_results.h"
 
 namespace agv {
 
 // A journal write, flush or sync that failed: the message names the journal and the OS error.
-class JournalError : public std::runtime_error {
+class JournalError : public SinkError {
  public:
-  using std::runtime_error::runtime_error;
+  using SinkError::SinkError;
 };
 
 // Appends records with write(2), each write checked and retried until whole, and fsync'd at

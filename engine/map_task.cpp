@@ -76,16 +76,6 @@ MapSlot regenerate_map_slot(const MapTaskContext& context, std::int64_t task) {
   return make_task_map(context, task).slot;
 }
 
-std::string journal_lines(const MapTaskContext& context, std::int64_t task, const MapFacts& facts,
-                          const std::vector<RecordedRun>& runs) {
-  const SweepCell& cell = context.plan.cell_of(task);
-  const int map_index = context.plan.map_index_of(task);
-  std::string lines = map_record(cell, map_index, facts);
-  for (const RecordedRun& r : runs)
-    lines += run_record(cell, map_index, r.planner, r.slot, r.message, facts);
-  return lines;
-}
-
 RunSlot lost_run_slot(Outcome outcome, std::int64_t wall_ns) {
   RunSlot slot;
   slot.metrics.fill(std::numeric_limits<double>::quiet_NaN());

@@ -60,16 +60,6 @@ struct MapTaskRun {
 };
 
 // A run as a journal records it.
-struct RecordedRun {
-  std::size_t planner;  // config index
-  RunSlot slot;
-  std::string message;
-};
-
-// A map task's journal lines: its map record, then its runs' records (engine/run_record.h).
-std::string journal_lines(const MapTaskContext& context, std::int64_t task, const MapFacts& facts,
-                          const std::vector<RecordedRun>& runs);
-
 // The slot of a run that produced none itself: its worker process died or was killed.
 RunSlot lost_run_slot(Outcome outcome, std::int64_t wall_ns);
 

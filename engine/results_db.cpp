@@ -535,21 +535,4 @@ void check_results_db(const std::string& path, const std::string& option) {
   check_layout(db);
 }
 
-void read_run_messages(const std::string& journal, const SweepResults& results,
-                       RunMessages& messages) {
-  std::map<std::string, const SweepCell*> cells;
-  for (const auto& c : results.plan.cells) cells[c.key] = &c;
-  std::map<std::string, std::size_t> planners;
-  for (std::size_t p = 0; p < results.labels.size(); ++p) planners[results.labels[p]] = p;
-  // A torn last line: not restored, no message either.
-  for_each_journal_record(journal, [&](const DecodedRecord& rec, const std::string&) {
-    if (rec.kind != DecodedRecord::Kind::run || rec.message.empty()) return;
-    const auto cell = cells.find(rec.cell);
-    const auto planner = planners.find(rec.planner);
-    if (cell == cells.end() || planner == planners.end()) return;
-    const std::int64_t task = results.plan.task_of(*cell->second, rec.map_index);
-    messages.emplace(std::make_pair(task, planner->second), rec.message);
-  });
-}
-
 }  // namespace agv

@@ -42,9 +42,4 @@ std::int64_t append_experiment(const std::string& db_path, const ExperimentRecor
 // agvbench database of this layout (what append_experiment would refuse). Reads only.
 void check_results_db(const std::string& path, const std::string& option);
 
-// The messages of the records of `journal` (which restore_journal has already read and checked
-// against `results`), keyed as RunMessages.
-void read_run_messages(const std::string& journal, const SweepResults& results,
-                       RunMessages& messages);
-
 }  // namespace agv

@@ -60,10 +60,10 @@ struct SweepResults {
   std::int64_t executed_runs = 0;
   int shard_index = 0;
   int shard_count = 1;
-  // Set when a journal write failed: the sweep stopped taking tasks, the runs the journal lost
-  // are not counted as done and `complete` is false (the message names the journal and the OS
-  // error).
-  std::string journal_error;
+  // Set when a sink failed (a journal write: engine/sweep_sink.h): the sweep stopped taking
+  // tasks, the runs the sink lost are not counted as done and `complete` is false (the message
+  // names the sink's file and the OS error).
+  std::string sink_error;
 
   int maps_of(const SweepCell& cell, std::size_t planner) const {
     return cells[static_cast<std::size_t>(cell.index)].scoped_maps[planner];

@@ -16,6 +16,7 @@
 #include "core/json_text.h"
 #include "core/printable.h"
 #include "engine/journal.h"
+#include "engine/journal_sink.h"
 #include "engine/map_task.h"
 
 namespace agv {
@@ -84,34 +85,37 @@ struct Worker {
 // What the map tasks of one run_sweep call share. Each task's slots are written by the one
 // thread that runs it.
 struct SweepState {
-  SweepState(const MapTaskContext& task_context, SweepResults& sweep_results, bool journaled)
+  SweepState(const MapTaskContext& task_context, SweepResults& sweep_results)
       : context(task_context),
         results(sweep_results),
         restorer(sweep_results),
-        header(journal_header(task_context.config_hash, task_context.config, task_context.plan)),
-        keep_lines(journaled) {}
+        header(journal_header(task_context.config_hash, task_context.config, task_context.plan)) {}
 
   const MapTaskContext& context;
   SweepResults& results;
   RecordRestorer restorer;  // worker records into slots
   std::string header;       // this sweep's journal header: worker replies are decoded under it
-  bool keep_lines;          // whether the runs' records become journal lines
   std::atomic<std::int64_t> executed{0};
   std::atomic<bool> cut{false};  // an interruption cut runs short: they are not recorded
 };
 
-// Runs the task's pending `planners` in this thread; returns their journal lines.
-std::string run_task_in_process(SweepState& s, MapTaskWorkspace& workspace, std::int64_t task,
-                                const std::vector<std::size_t>& planners) {
-  std::vector<RecordedRun> recorded;
-  const MapFacts facts =
-      run_map_task(s.context, task, planners, workspace, [&](const MapTaskRun& run) {
-        RunSlot slot = run_slot_of(run.output);
-        if (s.keep_lines) recorded.push_back({run.planner, slot, run.output.message});
-        s.results.store(task, run.planner, std::move(slot), run.map);
-        ++s.executed;
-      });
-  return s.keep_lines ? journal_lines(s.context, task, facts, recorded) : std::string();
+// A map task's runs, done, as the sinks get them.
+struct TaskDone {
+  MapFacts facts;
+  std::vector<RecordedRun> runs;
+};
+
+// Runs the task's pending `planners` in this thread.
+TaskDone run_task_in_process(SweepState& s, MapTaskWorkspace& workspace, std::int64_t task,
+                             const std::vector<std::size_t>& planners) {
+  TaskDone done;
+  done.facts = run_map_task(s.context, task, planners, workspace, [&](const MapTaskRun& run) {
+    RunSlot slot = run_slot_of(run.output);
+    done.runs.push_back({run.planner, slot, run.output.message});
+    s.results.store(task, run.planner, std::move(slot), run.map);
+    ++s.executed;
+  });
+  return done;
 }
 
 // A worker's reply decoded, or nullopt when its lines are not records (the worker is stopped and
@@ -131,20 +135,16 @@ std::optional<std::pair<DecodedRecord, DecodedRecord>> decode_reply(JournalDecod
   }
 }
 
-// Runs the task's pending planners in this thread's worker process; returns their journal
-// lines. A run the worker does not answer (it hung, died or sent garbage) is recorded here with
+// Runs the task's pending planners in this thread's worker process. A run the worker does not answer (it hung, died or sent garbage) is recorded here with
 // its outcome, and a fresh worker takes the task's remaining planners. A run an interruption cut
 // short is not recorded: the task's remaining planners stay pending for a resume.
-std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard_limit_s,
-                              std::int64_t task, const std::vector<std::size_t>& planners) {
-  std::vector<RecordedRun> recorded;
-  MapFacts facts;
+TaskDone run_task_isolated(SweepState& s, WorkerProcess& process, double hard_limit_s,
+                           std::int64_t task, const std::vector<std::size_t>& planners) {
+  TaskDone done;
+  std::vector<RecordedRun>& recorded = done.runs;
+  MapFacts& facts = done.facts;
   JournalDecoder decoder;  // this task's: its map's facts accumulate over the replies
   decoder.decode_line(s.header, "journal header");
-  const auto lines = [&] {
-    return s.keep_lines && !recorded.empty() ? journal_lines(s.context, task, facts, recorded)
-                                             : std::string();
-  };
   std::size_t next = 0;
   while (next < planners.size()) {
     process.start_task(task, std::span(planners).subspan(next));
@@ -154,7 +154,7 @@ std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard
       WorkerProcess::Reply reply = process.next_run(hard_limit_s);
       if (reply.cut) {
         s.cut = true;
-        return lines();
+        return done;
       }
       std::optional<std::pair<DecodedRecord, DecodedRecord>> records;
       if (reply.ok) records = decode_reply(decoder, reply, process);
@@ -173,13 +173,13 @@ std::string run_task_isolated(SweepState& s, WorkerProcess& process, double hard
         if (!ms.done) ms = regenerate_map_slot(s.context, task);
         if (!facts.slot.done) facts.slot = ms;
         RunSlot slot = lost_run_slot(reply.outcome, reply.wall_ns);
-        if (s.keep_lines) recorded.push_back({p, slot, reply.message});
+        recorded.push_back({p, slot, reply.message});
         s.results.store(task, p, std::move(slot), ms);
       }
       ++s.executed;
     }
   }
-  return lines();
+  return done;
 }
 
 // The first failure of any map task: the sweep stops taking tasks and throws it at the end,
@@ -196,16 +196,16 @@ class FirstFailure {
     }
     failed_ = true;
   }
-  // A journal write failure stops the sweep too, but is no error of a map task: the report is
-  // still written (incomplete) and the message names only the journal.
-  void record_journal(const JournalError& e) {
+  // A sink's failure (a journal write) stops the sweep too, but is no error of a map task: the
+  // report is still written (incomplete) and the message names only the sink's file.
+  void record_sink(const SinkError& e) {
     std::lock_guard lock(mutex_);
-    if (journal_error_.empty()) journal_error_ = e.what();
+    if (sink_error_.empty()) sink_error_ = e.what();
     failed_ = true;
   }
-  std::string journal_error() {
+  std::string sink_error() {
     std::lock_guard lock(mutex_);
-    return journal_error_;
+    return sink_error_;
   }
   bool failed() const { return failed_.load(std::memory_order_relaxed); }
   void rethrow() const {
@@ -218,38 +218,65 @@ class FirstFailure {
   std::mutex mutex_;
   std::optional<std::string> message_;
   bool is_input_ = false;
-  std::string journal_error_;
+  std::string sink_error_;
   std::atomic<bool> failed_{false};
 };
 
-// Hands the runs done to the caller's progress callback, one call at a time and in order.
-class ProgressReporter {
+// The sweep's sinks (engine/sweep_sink.h), called one at a time, in list order; counts the map
+// tasks each cell has still to finish.
+class SinkCalls {
  public:
-  ProgressReporter(const SweepProgress& callback, std::int64_t total)
-      : callback_(callback), total_(total) {
-    if (callback_) callback_(0, total_);
+  SinkCalls(std::vector<SweepSink*> sinks, const SweepResults& results, const Todo& todo)
+      : sinks_(std::move(sinks)), results_(results), tasks_left_(results.plan.cells.size(), 0) {
+    for (const std::int64_t t : todo.tasks) ++tasks_left_[cell_index(t)];
   }
-  void advance(std::int64_t runs) {
-    if (!callback_) return;
+
+  void start(const SweepStart& start) {
+    for (SweepSink* sink : sinks_) sink->start(start);
+  }
+  // The task's runs to every sink, then its cell when `whole` made it the cell's last task.
+  // Throws SinkError.
+  void task_done(std::int64_t task, const TaskDone& done, bool whole) {
     std::lock_guard lock(mutex_);
-    done_ += runs;
-    callback_(done_, total_);
+    const TaskRuns runs{task, done.facts, done.runs};
+    for (SweepSink* sink : sinks_) sink->task_done(runs);
+    if (!whole || --tasks_left_[cell_index(task)] > 0) return;
+    const SweepCell& cell = results_.plan.cell_of(task);
+    for (SweepSink* sink : sinks_) sink->cell_done(cell, results_);
+  }
+  // Every sink's end of the runs, also after a failure; returns the first SinkError's message.
+  std::string end_runs() {
+    std::string error;
+    for (SweepSink* sink : sinks_) {
+      try {
+        sink->end_runs();
+      } catch (const SinkError& e) {
+        if (error.empty()) error = e.what();
+      }
+    }
+    return error;
+  }
+  void finish(const SweepResults& results) {
+    for (SweepSink* sink : sinks_) sink->finish(results);
   }
 
  private:
-  const SweepProgress& callback_;
-  std::int64_t total_;
-  std::int64_t done_ = 0;
+  std::size_t cell_index(std::int64_t task) const {
+    return static_cast<std::size_t>(results_.plan.cell_of(task).index);
+  }
+
+  std::vector<SweepSink*> sinks_;
+  const SweepResults& results_;
+  std::vector<std::int64_t> tasks_left_;  // by cell index
   std::mutex mutex_;
 };
 
 // Runs `todo` over oneTBB until every task is done, a task fails or a stop is requested (runs
 // in flight finish unless cut short). Returns whether an interruption left runs undone.
-bool run_tasks(SweepState& state, const Todo& todo, const SweepOptions& options,
-               JournalWriter& journal, FirstFailure& failure) {
+bool run_tasks(SweepState& state, const Todo& todo, const SweepOptions& options, SinkCalls& sinks,
+               FirstFailure& failure) {
   const bool isolated = options.isolation.enabled;
   const WorkerLaunch launch = worker_launch(state.context.config, options.isolation);
-  ProgressReporter progress(options.progress, todo.runs);
   tbb::enumerable_thread_specific<Worker> workers([&] {
     Worker w;
     if (isolated) {
@@ -272,25 +299,22 @@ bool run_tasks(SweepState& state, const Todo& todo, const SweepOptions& options,
     const std::vector<std::size_t> planners = state.results.pending_planners(task);
     try {
       Worker& w = workers.local();  // may start an isolation worker, which may fail
-      const std::string lines =
+      const TaskDone done =
           isolated ? run_task_isolated(state, *w.process, launch.hard_limit_s, task, planners)
                    : run_task_in_process(state, w.workspace, task, planners);
-      if (journal.enabled() && !lines.empty()) {
-        try {
-          journal.write(lines);
-        } catch (const JournalError& e) {
-          // The task's runs are not in the journal: not done, so the report is incomplete and a
-          // resume runs them again.
-          for (const std::size_t p : planners) state.results.run(task, p).done = false;
-          failure.record_journal(e);
-        }
+      try {
+        sinks.task_done(task, done, done.runs.size() == planners.size());
+      } catch (const SinkError& e) {
+        // A sink lost the task's runs: not done, so the report is incomplete and a resume runs
+        // them again.
+        for (const std::size_t p : planners) state.results.run(task, p).done = false;
+        failure.record_sink(e);
       }
     } catch (const RunsCut&) {
       state.cut = true;  // a worker not yet ready when the cut came: no run to record
     } catch (const std::exception& e) {
       failure.record(state.results.plan, task, e);
     }
-    progress.advance(static_cast<std::int64_t>(planners.size()));
   });
   return stopped.load() || state.cut.load();
 }
@@ -306,37 +330,37 @@ void run_sweep(const SweepConfig& config, SweepResults& res, const SweepOptions&
   const bool resume = !options.resume_path.empty();
   const std::string journal_path = journal_path_of(options);
   JournalStats restored;
-  if (resume) restored = restore_journal(options.resume_path, res);
+  RunMessages restored_messages;
+  if (resume) restored = restore_journal(options.resume_path, res, &restored_messages);
   res.restored_runs = restored.records;
-  JournalWriter journal(journal_path, resume);
-  // A new journal starts with its header; a resumed one gets one unless its last segment is
-  // already this sweep's (an empty file, a version 1 journal, a header a kill cut short).
-  if (journal.enabled() && !restored.has_header)
-    journal.write(journal_header(res.config_hash, config, res.plan));
+  // The journal is the first sink: what the others are handed is on disk first.
+  std::optional<JournalSink> journal;
+  if (!journal_path.empty()) journal.emplace(journal_path, resume);
+  std::vector<SweepSink*> sinks;
+  if (journal) sinks.push_back(&*journal);
+  sinks.insert(sinks.end(), options.sinks.begin(), options.sinks.end());
 
   res.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                             static_cast<std::size_t>(res.threads));
 
   const Todo todo = pending_tasks(res, options);
-  SweepState state(context, res, journal.enabled());
+  SinkCalls calls(std::move(sinks), res, todo);
+  calls.start({config, res, todo.runs, restored, restored_messages});
+  SweepState state(context, res);
   FirstFailure failure;
   const auto t0 = std::chrono::steady_clock::now();
-  res.interrupted = run_tasks(state, todo, options, journal, failure);
+  res.interrupted = run_tasks(state, todo, options, calls, failure);
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   res.executed_runs = state.executed.load();
-  res.journal_error = failure.journal_error();
-  if (res.journal_error.empty()) {
-    try {
-      journal.finish();
-    } catch (const JournalError& e) {
-      res.journal_error = e.what();
-    }
-  }
+  res.sink_error = failure.sink_error();
+  const std::string end_error = calls.end_runs();
+  if (res.sink_error.empty()) res.sink_error = end_error;
   update_completeness(res);
   // Runs whose records may not have reached the disk: the sweep's record is not complete.
-  if (!res.journal_error.empty()) res.complete = false;
+  if (!res.sink_error.empty()) res.complete = false;
   failure.rethrow();
+  calls.finish(res);
 }
 
 SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options) {

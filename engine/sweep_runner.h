@@ -14,19 +14,18 @@
 
 #include "engine/isolated_worker.h"
 #include "engine/sweep_results.h"
+#include "engine/sweep_sink.h"
 
 namespace agv {
 
-// done, total: the runs of this call (a resume's restored runs are not among them).
-using SweepProgress = std::function<void(std::int64_t done, std::int64_t total)>;
-
 struct SweepOptions {
   int threads = 0;  // 0 = all hardware threads
-  // Progress, in runs: called once with done = 0 before the first task, then after each map task
-  // with the runs done so far, from the worker threads but one call at a time (done never
-  // decreases). Empty = none. The command line draws its meter from it (cli/progress.h).
-  SweepProgress progress;
-  std::string runs_path;  // JSON Lines of per-run records (the journal); empty = none
+  // Where the results go besides the journal (engine/sweep_sink.h), in this order: the report,
+  // the database, the progress display, a test's probe. Not owned.
+  std::vector<SweepSink*> sinks;
+  // The journal (JSON Lines of per-run records), the first sink, which run_sweep makes itself
+  // because a resume reads it too; empty = none.
+  std::string runs_path;
   // Resume: restore the runs recorded in this journal, run only the others, and append their
   // records to it (runs_path must then be empty or the same file).
   std::string resume_path;
@@ -42,9 +41,11 @@ struct SweepOptions {
   IsolationOptions isolation;
 };
 
-// Runs the sweep into `results` (empty_results of the config, whose plan and hash it uses).
-// Throws InputError for bad configs and std::runtime_error for failures such as a generator that
-// cannot produce a solvable map.
+// Runs the sweep into `results` (empty_results of the config, whose plan and hash it uses),
+// handing it to the journal and options.sinks as it goes. Throws InputError for bad configs and
+// std::runtime_error for failures such as a generator that cannot produce a solvable map (then
+// no sink's finish is called), and what a sink's finish throws (a report that cannot be
+// written). A sink's failure during the runs is not thrown: results.sink_error names it.
 void run_sweep(const SweepConfig& config, SweepResults& results, const SweepOptions& options);
 // The same into fresh results.
 SweepResults run_sweep(const SweepConfig& config, const SweepOptions& options);

@@ -91,6 +91,7 @@ cat >msg.json <<'JSON'
  "maps_per_cell": 4, "planners": ["astar", {"name": "rrt", "params": {"max_iterations": 10}}]}
 JSON
 check "failure messages reach the database (run --db and export)" sh -c "'$bin' run msg.json --out msg.report --runs-out msg.jsonl --db msg.db --quiet && '$bin' export msg.jsonl --config msg.json --sqlite msg2.db >/dev/null && n=\$(grep -c '\"message\"' msg.jsonl) && test \$n -gt 0 && for d in msg.db msg2.db; do test \"\$(sqlite3 \$d \"select count(*) from runs where message like 'max_iterations%'\")\" = \$n || exit 1; done"
+check "... and without a journal (run --db hands them over as the runs finish)" sh -c "'$bin' run msg.json --out msg3.report --db msg3.db --quiet && n=\$(grep -c '\"message\"' msg.jsonl) && test \"\$(sqlite3 msg3.db \"select count(*) from runs where message like 'max_iterations%'\")\" = \$n"
 check "a small database of one sweep" "$bin" export tiny1.jsonl --config tiny.json --sqlite small.db
 expect_exit "a write that fails (file-size limit) is exit 1" 1 bash -c "ulimit -f 600; exec '$bin' export quick.jsonl --config '$cfg' --sqlite small.db"
 check "... naming the database" grep -q -- '--sqlite "small.db": ' last.err

@@ -206,9 +206,9 @@ TEST(JournalWriter, AFileSizeLimitStopsTheSweepAndLeavesItIncomplete) {
     const FileSizeLimit limit(first_map + 100);
     res = run_sweep(config, options);
   }
-  EXPECT_NE(res.journal_error.find("journal \"" + options.runs_path + "\""), std::string::npos)
-      << res.journal_error;
-  EXPECT_NE(res.journal_error.find("File too large"), std::string::npos) << res.journal_error;
+  EXPECT_NE(res.sink_error.find("journal \"" + options.runs_path + "\""), std::string::npos)
+      << res.sink_error;
+  EXPECT_NE(res.sink_error.find("File too large"), std::string::npos) << res.sink_error;
   EXPECT_FALSE(res.complete);
   const Coverage coverage = coverage_of(res);
   EXPECT_LT(coverage.runs_present, coverage.runs_expected);

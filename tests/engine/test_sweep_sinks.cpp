@@ -1,0 +1,224 @@
+// The sweep's sinks (engine/sweep_sink.h): the calls in their order and one at a time, a cell
+// handed over once all its runs are in, a failing sink stopping the sweep with nothing lost
+// unsaid, and the report and database sinks fed from the runs (issue 46, stage 2).
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "engine/config_loader.h"
+#include "engine/database_sink.h"
+#include "engine/report.h"
+#include "engine/report_sink.h"
+#include "engine/sweep_runner.h"
+
+namespace agv {
+namespace sink_tests {  // a name of its own: test files share a unity build
+namespace {
+
+namespace fs = std::filesystem;
+
+class Scratch {
+ public:
+  explicit Scratch(const std::string& name)
+      : dir_(fs::temp_directory_path() / ("agv_sinks_" + name + "_" + std::to_string(::getpid()))) {
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  ~Scratch() { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+ private:
+  fs::path dir_;
+};
+
+// Two cells of four maps, A* on all of them and RRT (its iterations too few to succeed always,
+// so some runs fail with a message) on the first two maps of each.
+SweepConfig two_cells() {
+  return parse_config(
+      {{"sizes", {16}},
+       {"densities", {0.1, 0.2}},
+       {"maps_per_cell", 4},
+       {"planners",
+        {"astar", {{"name", "rrt"},
+          {"only", {{"maps_per_cell", 2}}},
+          {"params", {{"max_iterations", 10}}}}}}});
+}
+
+// Records what it is handed and checks each call against what came before.
+class ProbeSink : public SweepSink {
+ public:
+  void start(const SweepStart& start) override {
+    enter();
+    EXPECT_EQ(calls, "");
+    calls += "S";
+    runs_to_do = start.runs_to_do;
+    leave();
+  }
+  void task_done(const TaskRuns& runs) override {
+    enter();
+    EXPECT_EQ(calls, "S");
+    ++tasks;
+    runs_seen += static_cast<std::int64_t>(runs.runs.size());
+    for (const RecordedRun& r : runs.runs)
+      if (!r.message.empty()) ++messages;
+    if (tasks == stop_after && stop != nullptr) *stop = true;
+    if (tasks == fail_at) {
+      leave();
+      throw SinkError("probe: disk full");
+    }
+    leave();
+  }
+  void cell_done(const SweepCell& cell, const SweepResults& results) override {
+    enter();
+    cells.push_back(cell.index);
+    // Every scheduled run of the cell is in its slot.
+    for (int m = 0; m < cell.maps; ++m)
+      for (std::size_t p = 0; p < results.labels.size(); ++p)
+        if (m < results.maps_of(cell, p)) {
+          EXPECT_TRUE(results.run(cell, m, p).done);
+        }
+    leave();
+  }
+  void end_runs() override { calls += "E"; }
+  void finish(const SweepResults& results) override {
+    EXPECT_EQ(calls, "SE");
+    calls += "F";
+    finished_complete = results.complete;
+  }
+
+  std::string calls;
+  std::int64_t runs_to_do = 0, runs_seen = 0;
+  int tasks = 0, messages = 0;
+  std::vector<int> cells;
+  bool finished_complete = false;
+  int fail_at = -1;     // throws SinkError at this task
+  int stop_after = -1;  // sets `stop` after this task
+  std::atomic<bool>* stop = nullptr;
+
+ private:
+  // No two calls at once, whichever thread makes them.
+  void enter() { EXPECT_FALSE(busy_.exchange(true)); }
+  void leave() { busy_ = false; }
+  std::atomic<bool> busy_{false};
+};
+
+std::int64_t count_rows(const std::string& db, const std::string& sql) {
+  sqlite3* handle = nullptr;
+  EXPECT_EQ(sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+  sqlite3_stmt* stmt = nullptr;
+  EXPECT_EQ(sqlite3_prepare_v2(handle, sql.c_str(), -1, &stmt, nullptr), SQLITE_OK);
+  std::int64_t n = -1;
+  if (sqlite3_step(stmt) == SQLITE_ROW) n = sqlite3_column_int64(stmt, 0);
+  sqlite3_finalize(stmt);
+  sqlite3_close(handle);
+  return n;
+}
+
+TEST(SweepSinks, EveryTaskThenEveryCellOnceThenTheEndOneCallAtATime) {
+  const SweepConfig config = two_cells();
+  ProbeSink probe;
+  SweepOptions options;
+  options.threads = 2;
+  options.sinks = {&probe};
+  const SweepResults r = run_sweep(config, options);
+  EXPECT_EQ(probe.calls, "SEF");
+  EXPECT_EQ(probe.runs_to_do, 12);  // 8 maps of A*, 4 of RRT
+  EXPECT_EQ(probe.runs_seen, 12);
+  EXPECT_EQ(probe.tasks, 8);
+  std::vector<int> cells = probe.cells;
+  std::sort(cells.begin(), cells.end());
+  EXPECT_EQ(cells, (std::vector<int>{0, 1}));
+  EXPECT_TRUE(probe.finished_complete);
+  EXPECT_TRUE(r.complete);
+  EXPECT_GT(probe.messages, 0);
+}
+
+TEST(SweepSinks, AFailingSinkStopsTheSweepWhichEndsIncompleteNamingIt) {
+  const SweepConfig config = two_cells();
+  Scratch dir("failing");
+  ProbeSink failing, after;
+  failing.fail_at = 3;
+  ReportSink report(config, dir.path("report.json"));
+  SweepOptions options;
+  options.threads = 1;
+  options.sinks = {&failing, &after, &report};
+  const SweepResults r = run_sweep(config, options);
+  EXPECT_EQ(r.sink_error, "probe: disk full");
+  EXPECT_FALSE(r.complete);
+  EXPECT_EQ(after.tasks, 2);  // the task the failing sink lost went no further
+  EXPECT_EQ(failing.calls, "SEF");
+  // The report is written, incomplete, without the lost task's runs.
+  std::ifstream in(dir.path("report.json"));
+  const nlohmann::json written = nlohmann::json::parse(in);
+  EXPECT_EQ(written.at("complete"), false);
+  EXPECT_EQ(written, report.report());
+}
+
+TEST(SweepSinks, AnInterruptedSweepHandsOverNoCellItDidNotFinish) {
+  const SweepConfig config = two_cells();
+  std::atomic<bool> stop{false};
+  ProbeSink probe;
+  probe.stop = &stop;
+  probe.stop_after = 2;
+  SweepOptions options;
+  options.threads = 1;
+  options.stop = &stop;
+  options.sinks = {&probe};
+  const SweepResults r = run_sweep(config, options);
+  EXPECT_TRUE(r.interrupted);
+  EXPECT_EQ(probe.tasks, 2);
+  EXPECT_TRUE(probe.cells.empty());
+  EXPECT_EQ(probe.calls, "SEF");
+  EXPECT_FALSE(probe.finished_complete);
+}
+
+// The database gets the report the report sink built and every failure's message, the restored
+// ones of a resume included, with no journal read after the sweep.
+TEST(SweepSinks, TheDatabaseHasEveryMessageAlsoAfterAResume) {
+  const SweepConfig config = two_cells();
+  Scratch dir("database");
+  std::int64_t failures = 0;
+  {
+    ProbeSink probe;
+    SweepOptions whole;
+    whole.sinks = {&probe};
+    run_sweep(config, whole);
+    failures = probe.messages;
+  }
+  ASSERT_GT(failures, 0);
+  // Half the sweep journaled, then resumed with the database.
+  std::atomic<bool> stop{false};
+  ProbeSink stopper;
+  stopper.stop = &stop;
+  stopper.stop_after = 4;
+  SweepOptions first;
+  first.threads = 1;
+  first.stop = &stop;
+  first.runs_path = dir.path("runs.jsonl");
+  first.sinks = {&stopper};
+  ASSERT_TRUE(run_sweep(config, first).interrupted);
+  ReportSink report(config, dir.path("report.json"));
+  DatabaseSink database(config, dir.path("results.db"), "--db", report);
+  SweepOptions resume;
+  resume.resume_path = dir.path("runs.jsonl");
+  resume.sinks = {&report, &database};
+  const SweepResults r = run_sweep(config, resume);
+  ASSERT_TRUE(r.complete);
+  ASSERT_TRUE(database.experiment_id().has_value());
+  EXPECT_GT(r.restored_runs, 0);
+  EXPECT_EQ(count_rows(dir.path("results.db"), "select count(*) from runs"), 12);
+  EXPECT_EQ(count_rows(dir.path("results.db"),
+                       "select count(*) from runs where message like 'max_iterations%'"),
+            failures);
+}
+
+}  // namespace
+}  // namespace sink_tests
+}  // namespace agv

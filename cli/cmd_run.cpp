@@ -145,11 +145,6 @@ SweepOptions run_options(const RunCommand& cmd, const std::string& config_path,
   return options;
 }
 
-// The journal this run wrote or appended to ("" = none).
-std::string journal_of(const SweepOptions& options) {
-  return options.resume_path.empty() ? options.runs_path : options.resume_path;
-}
-
 int sink_failed(const SweepConfig& config, const SweepResults& results,
                    const SweepOptions& options) {
   // The runs the journal lost are not in the report either: a resume runs them again.
@@ -160,20 +155,19 @@ int sink_failed(const SweepConfig& config, const SweepResults& results,
                "--resume %s\n",
                results.sink_error.c_str(), static_cast<long long>(coverage.runs_present),
                static_cast<long long>(coverage.runs_expected), config.report_path.c_str(),
-               journal_of(options).c_str());
+               journal_path_of(options).c_str());
   return 1;
 }
 
 int interrupted(const RunCommand& cmd, const SweepConfig& config, const SweepResults& results,
                 const SweepOptions& options) {
+  const std::string journal = journal_path_of(options);
   std::fprintf(stderr,
                "agvbench: interrupted: %lld runs done this time, %lld restored; report (marked "
                "incomplete): %s; resume with --resume %s\n",
                static_cast<long long>(results.executed_runs),
                static_cast<long long>(results.restored_runs), config.report_path.c_str(),
-               !options.resume_path.empty() ? options.resume_path.c_str()
-               : options.runs_path.empty()  ? "JOURNAL (none was written: use --runs-out)"
-                                            : options.runs_path.c_str());
+               journal.empty() ? "JOURNAL (none was written: use --runs-out)" : journal.c_str());
   if (!cmd.db.empty())
     std::fprintf(stderr,
                  "agvbench: nothing appended to %s (an interrupted sweep is appended when its "

@@ -415,18 +415,12 @@ SweepConfig parse_config(const json& j, const std::string& base_dir) {
   c.planners = parse_planners(r, c);
   c.baseline = r.string("baseline", "");
   if (c.baseline.empty()) {
-    c.baseline = c.planners.front().label;
-    for (const auto& p : c.planners)
-      if (p.label == "astar") c.baseline = "astar";
-  } else {
-    bool found = false;
-    for (const auto& p : c.planners) found = found || p.label == c.baseline;
-    if (!found)
-      throw InputError("baseline: \"" + c.baseline + "\" is not a planner label of this sweep");
+    c.baseline = planner_index(c, "astar") ? "astar" : c.planners.front().label;
+  } else if (!planner_index(c, c.baseline)) {
+    throw InputError("baseline: \"" + c.baseline + "\" is not a planner label of this sweep");
   }
-  for (const auto& p : c.planners)
-    if (p.label == c.baseline && !p.only.everywhere())
-      throw InputError("baseline: \"" + c.baseline +
+  if (!c.planners[baseline_index(c)].only.everywhere())
+    throw InputError("baseline: \"" + c.baseline +
                        "\" has an \"only\" scope; the baseline runs on every map so that every "
                        "planner can be paired with it");
   c.time_limit_s = r.number("time_limit_s", c.time_limit_s, kTimeLimitRange);

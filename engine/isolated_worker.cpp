@@ -17,6 +17,7 @@
 #include "core/json_text.h"
 #include "core/printable.h"
 #include "engine/config_loader.h"
+#include "engine/file_writes.h"
 #include "engine/map_task.h"
 
 extern char** environ;
@@ -27,12 +28,7 @@ namespace {
 
 void write_all(int fd, const std::string& text) {
   std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw std::runtime_error("worker pipe closed");
-    done += static_cast<std::size_t>(n);
-  }
+  if (write_whole(fd, text, done) != 0) throw std::runtime_error("worker pipe closed");
 }
 
 struct TaskRequest {
@@ -152,7 +148,8 @@ void WorkerProcess::spawn() {
     throw RunsCut();
   } else {
     bool interrupted = false;
-    why = describe_exit(interrupted);
+    std::int64_t cpu_ns = 0;
+    why = describe_exit(interrupted, cpu_ns);
     stop();
     if (interrupted) throw RunsCut();
   }
@@ -199,11 +196,25 @@ void WorkerProcess::stop() {
   to_child_ = from_child_ = -1;
 }
 
-std::string WorkerProcess::describe_exit(bool& interrupted) {
+std::int64_t WorkerProcess::cpu_time_ns() const {
+  clockid_t clock;
+  timespec t{};
+  if (pid_ <= 0 || ::clock_getcpuclockid(pid_, &clock) != 0 || ::clock_gettime(clock, &t) != 0)
+    return -1;
+  return static_cast<std::int64_t>(t.tv_sec) * 1'000'000'000 + t.tv_nsec;
+}
+
+std::string WorkerProcess::describe_exit(bool& interrupted, std::int64_t& cpu_ns) {
   int status = 0;
   pid_t r;
-  while ((r = ::waitpid(pid_, &status, 0)) < 0 && errno == EINTR) {
+  rusage usage{};
+  while ((r = ::wait4(pid_, &status, 0, &usage)) < 0 && errno == EINTR) {
   }
+  cpu_ns = r > 0 ? (static_cast<std::int64_t>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) *
+                        1'000'000 +
+                    usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) *
+                       1000
+                 : -1;
   ::kill(-pid_, SIGKILL);  // what its planner started, if anything is left of its group
   pid_ = -1;
   interrupted = false;
@@ -236,6 +247,10 @@ WorkerProcess::Reply WorkerProcess::next_run(double hard_limit_s) {
   const auto start = Clock::now();
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                     std::chrono::duration<double>(hard_limit_s));
+  const std::int64_t cpu_start = cpu_time_ns();
+  const auto cpu_since_start = [cpu_start](std::int64_t now) {
+    return cpu_start >= 0 && now >= cpu_start ? now - cpu_start : std::int64_t{-1};
+  };
   // The reply's two lines, under one deadline.
   ReadStatus status = read_line(deadline, reply.map_line);
   if (status == ReadStatus::line) status = read_line(deadline, reply.run_line);
@@ -246,6 +261,7 @@ WorkerProcess::Reply WorkerProcess::next_run(double hard_limit_s) {
       reply.ok = true;
       return reply;
     case ReadStatus::timeout:
+      reply.cpu_ns = cpu_since_start(cpu_time_ns());
       stop();
       reply.outcome = Outcome::timeout;
       reply.message = "killed at the hard limit of " + std::to_string(hard_limit_s) + " s";
@@ -255,13 +271,16 @@ WorkerProcess::Reply WorkerProcess::next_run(double hard_limit_s) {
       reply.cut = true;
       reply.message = "cut short by a stop request";
       return reply;
-    case ReadStatus::closed:
+    case ReadStatus::closed: {
       reply.outcome = Outcome::crash;
-      reply.message = describe_exit(reply.cut);
+      std::int64_t cpu_total = -1;
+      reply.message = describe_exit(reply.cut, cpu_total);
+      reply.cpu_ns = cpu_since_start(cpu_total);
       ::close(to_child_);
       ::close(from_child_);
       to_child_ = from_child_ = -1;
       return reply;
+    }
   }
   return reply;
 }

@@ -64,7 +64,11 @@ class WorkerProcess {
     // When !ok: an interruption ended the run (see above), so it has no outcome to record.
     bool cut = false;
     std::string message;
-    std::int64_t wall_ns = 0;
+    std::int64_t wall_ns = 0;  // the parent's wait for the reply
+    // When !ok: the worker's CPU time during that wait (its process CPU clock, or for a worker
+    // that died what wait4 reports), -1 when it could not be read: a lost run's planning time,
+    // the clock every other run's is measured on.
+    std::int64_t cpu_ns = -1;
   };
   // Asks for the runs of `planners` (config indices, in this order) on map task `task`; starts
   // a worker first when none is running (none is after a reply that is not ok).
@@ -85,8 +89,10 @@ class WorkerProcess {
   // cut_short is set first.
   ReadStatus read_line(Clock::time_point deadline, std::string& line);
   // Reaps the exited worker; `interrupted` tells whether a signal that asks a process to stop
-  // (not a fault) ended it.
-  std::string describe_exit(bool& interrupted);
+  // (not a fault) ended it, `cpu_ns` the CPU time it used in all (-1 if unknown).
+  std::string describe_exit(bool& interrupted, std::int64_t& cpu_ns);
+  // The running worker's CPU time so far (its process CPU clock), -1 if it cannot be read.
+  std::int64_t cpu_time_ns() const;
   bool cut_requested() const { return cut_short_ != nullptr && cut_short_->load(); }
 
   std::vector<std::string> command_;

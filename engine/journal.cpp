@@ -13,6 +13,7 @@
 #include "core/input_error.h"
 #include "core/json_text.h"
 #include "core/text_file.h"
+#include "engine/file_writes.h"
 #include "engine/run_record.h"
 
 namespace agv {
@@ -67,16 +68,10 @@ void JournalWriter::write(const std::string& lines) {
   std::lock_guard lock(mutex_);
   if (!failure_.empty()) throw JournalError(failure_);
   std::size_t done = 0;
-  while (done < lines.size()) {
-    const ssize_t n = ::write(fd_, lines.data() + done, lines.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    // A zero-byte write of a non-empty buffer makes no progress: treated as a full disk.
-    if (n <= 0)
-      fail("write failed after " + std::to_string(done) + " of " + std::to_string(lines.size()) +
-               " bytes",
-           n < 0 ? errno : ENOSPC);
-    done += static_cast<std::size_t>(n);
-  }
+  if (const int error = write_whole(fd_, lines, done); error != 0)
+    fail("write failed after " + std::to_string(done) + " of " + std::to_string(lines.size()) +
+             " bytes",
+         error);
   unsynced_ = true;
   if (std::chrono::steady_clock::now() - last_sync_ >= kSyncInterval) sync_locked();
 }

@@ -1,5 +1,6 @@
 #include "engine/map_task.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "engine/single_map.h"
@@ -76,12 +77,11 @@ MapSlot regenerate_map_slot(const MapTaskContext& context, std::int64_t task) {
   return make_task_map(context, task).slot;
 }
 
-RunSlot lost_run_slot(Outcome outcome, std::int64_t wall_ns) {
+RunSlot lost_run_slot(Outcome outcome, std::int64_t cpu_ns) {
   RunSlot slot;
   slot.metrics.fill(std::numeric_limits<double>::quiet_NaN());
   slot.outcome = outcome;
-  // No CPU time of the run survives its process: the parent's wall clock stands in.
-  slot.plan_time_ns = wall_ns;
+  slot.plan_time_ns = std::max<std::int64_t>(cpu_ns, 0);
   return slot;
 }
 

@@ -61,7 +61,9 @@ struct MapTaskRun {
 
 // A run as a journal records it.
 // The slot of a run that produced none itself: its worker process died or was killed.
-RunSlot lost_run_slot(Outcome outcome, std::int64_t wall_ns);
+// `cpu_ns` is the worker's CPU time while the run was awaited (WorkerProcess::Reply), so its
+// planning time is on the clock of every other run's; 0 when it could not be read (-1).
+RunSlot lost_run_slot(Outcome outcome, std::int64_t cpu_ns);
 
 // Generates the map of `task`, runs `planners` (config indices) on it in the order given and
 // hands each run to `on_run` as soon as it is done. Returns the map's facts (its slot and the

@@ -153,8 +153,7 @@ double max_window_turn(std::span<const TurnBox> boxes) {
 }  // namespace
 
 PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
-                                 const MotionTimeParams& motion, std::int64_t plan_time_ns,
-                                 std::int64_t waypoints) {
+                                 const MotionTimeParams& motion, std::int64_t waypoints) {
   PathMetrics m;
   m.waypoints = waypoints >= 0 ? waypoints : static_cast<std::int64_t>(path.size());
   if (path.empty()) return m;
@@ -207,7 +206,6 @@ PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
   m.motion_time_s = m.path_length_m / motion.line_speed_mps +
                     static_cast<double>(m.waypoints) * motion.node_time_s +
                     m.turn_angle_rad / motion.turn_speed_radps;
-  if (motion.include_plan_time) m.motion_time_s += static_cast<double>(plan_time_ns) * 1e-9;
   return m;
 }
 

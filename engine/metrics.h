@@ -19,7 +19,8 @@ struct MotionTimeParams {
   double line_speed_mps = 1.0;                 // v_L
   double node_time_s = 0.1;                    // t_o, per waypoint
   double turn_speed_radps = std::numbers::pi;  // v_s
-  bool include_plan_time = false;              // add the planning CPU time
+  // Paper 000's eq. 5.2e may add the planning time; this one never does: a time measured on the
+  // machine inside a non-timing metric would make the report depend on more than its seed.
 };
 
 // Every metric is defined on the geometry of the path, so a polyline and a densely sampled curve
@@ -42,8 +43,7 @@ struct PathMetrics {
   // border included): DistanceTransform::segment_clearance. And in metres.
   double min_clearance = 0.0;
   double min_clearance_m = 0.0;
-  // Paper 000 eq. 5.2e: path_length_m / v_L + waypoints * t_o + turn_angle_rad / v_s
-  // (+ plan time in seconds if include_plan_time).
+  // Paper 000 eq. 5.2e: path_length_m / v_L + waypoints * t_o + turn_angle_rad / v_s.
   double motion_time_s = 0.0;
 };
 
@@ -67,8 +67,7 @@ inline constexpr double kTurnSpread = 0.25;       // cells either side of a vert
 // `waypoints` >= 0 overrides the point count as PathMetrics::waypoints (and its motion-time
 // term) for a path that is a sampled curve: docs/METRICS.md counts waypoints before sampling.
 PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
-                                 const MotionTimeParams& motion = {}, std::int64_t plan_time_ns = 0,
-                                 std::int64_t waypoints = -1);
+                                 const MotionTimeParams& motion = {}, std::int64_t waypoints = -1);
 
 // Sum of segment lengths in cells, compensated: the same length compute_path_metrics reports.
 double polyline_length(std::span<const Point> path);

@@ -16,6 +16,7 @@
 
 #include "core/json_text.h"
 #include "engine/environment.h"
+#include "engine/file_writes.h"
 #include "engine/metric_specs.h"
 #include "engine/statistics.h"
 
@@ -185,9 +186,7 @@ PairedComparison compare(const std::vector<double>& va, const std::vector<double
 }
 
 json paired_cell_json(const SweepConfig& config, const SweepResults& r, const SweepCell& cell) {
-  std::size_t base = 0;
-  for (std::size_t p = 0; p < r.labels.size(); ++p)
-    if (r.labels[p] == config.baseline) base = p;
+  const std::size_t base = baseline_index(config);
   json out = json::array();
   std::vector<double> va, vb;
   for (std::size_t p = 0; p < r.labels.size(); ++p) {
@@ -265,71 +264,8 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
   return report;
 }
 
-namespace {
-
-[[noreturn]] void write_failed(const std::string& path, const std::string& tmp,
-                               const std::string& doing, int error) {
-  ::unlink(tmp.c_str());
-  throw std::runtime_error("cannot write \"" + path + "\": " + doing + ": " + std::strerror(error) +
-                           " (its temporary \"" + tmp +
-                           "\" was removed; the previous file, if any, is intact)");
-}
-
-// Removes `NAME.tmp.PID` beside `target` whose process is gone: a write killed before its rename
-// (or a crash) left it. A temporary of a live process is another writer's, left alone.
-void remove_stale_temporaries(const std::filesystem::path& target) {
-  namespace fs = std::filesystem;
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  const std::string prefix = target.filename().string() + ".tmp.";
-  std::error_code ec;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::string digits = name.substr(prefix.size());
-    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
-    const pid_t pid = static_cast<pid_t>(std::stol(digits));
-    if (pid == ::getpid()) continue;
-    if (::kill(pid, 0) == 0 || errno != ESRCH) continue;
-    std::error_code ignored;
-    if (it->is_regular_file(ignored)) fs::remove(it->path(), ignored);
-  }
-}
-
-}  // namespace
-
 void write_json_atomic(const json& document, const std::string& path) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  remove_stale_temporaries(target);
-  const std::string tmp = path + ".tmp." + std::to_string(getpid());
-  const std::string text = json_text(document, 1) + "\n";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) write_failed(path, tmp, "cannot create its temporary", errno);
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int error = n < 0 ? errno : ENOSPC;
-      ::close(fd);
-      write_failed(path, tmp, "write failed", error);
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0) {
-    const int error = errno;
-    ::close(fd);
-    write_failed(path, tmp, "fsync failed", error);
-  }
-  if (::close(fd) != 0) write_failed(path, tmp, "close failed", errno);
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) write_failed(path, tmp, "rename failed", errno);
-  // The rename itself is durable once the folder is synced.
-  const std::string dir = target.has_parent_path() ? target.parent_path().string() : ".";
-  const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dir_fd >= 0) {
-    ::fsync(dir_fd);
-    ::close(dir_fd);
-  }
+  write_file_atomic(json_text(document, 1) + "\n", path);
 }
 
 json deterministic_part(const json& report) {
@@ -350,9 +286,7 @@ json deterministic_part(const json& report) {
 }
 
 std::string summary_table(const SweepConfig& config, const SweepResults& r) {
-  std::size_t base = 0;
-  for (std::size_t p = 0; p < r.labels.size(); ++p)
-    if (r.labels[p] == config.baseline) base = p;
+  const std::size_t base = baseline_index(config);
   std::ostringstream out;
   char line[256];
   // %11s: "µ" is two bytes and one column.

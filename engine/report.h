@@ -17,10 +17,7 @@ nlohmann::json build_report(const SweepConfig& config, const SweepResults& resul
 // A statistic as the report writes it: null where it is not finite (JSON has no NaN or inf).
 nlohmann::json number_or_null(double v);
 
-// Temporary file in the same folder, fsync, rename: a reader (or a crash) sees the old report or
-// the new one, never a torn one. The folder must exist (engine/output_paths.h checks it before a
-// sweep); temporaries of this path left by a process that is gone are removed first. Throws
-// std::runtime_error naming `path` and the OS error.
+// The document, indented by one, written with write_file_atomic (engine/file_writes.h).
 void write_json_atomic(const nlohmann::json& document, const std::string& path);
 
 // The report without `timing` and `environment` keys at any depth: what must be byte-identical

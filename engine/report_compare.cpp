@@ -342,12 +342,7 @@ std::string p_text(double p) {
 
 }  // namespace
 
-std::string report_config_hash(const json& report) {
-  const std::uint64_t h = stable_hash(json_text(report.at("config")));
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
+std::string report_config_hash(const json& report) { return config_hash_of(report.at("config")); }
 
 void read_run_times(const std::string& journal, const std::string& config_hash, RunTimes& times) {
   // A torn last line is a run resume would redo: skipped.

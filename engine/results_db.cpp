@@ -369,13 +369,14 @@ void insert_planners_and_cells(Database& db, std::int64_t id, const ExperimentRe
   Statement planner(db,
                     "INSERT INTO planners (experiment_id, planner_id, label, name, params_json, "
                     "is_baseline) VALUES (?,?,?,?,?,?)");
+  const std::size_t base = baseline_index(c);
   for (std::size_t p = 0; p < c.planners.size(); ++p) {
     planner.bind(1, id)
         .bind(2, p)
         .bind(3, c.planners[p].label)
         .bind(4, c.planners[p].name)
         .bind(5, json_text(config.at("planners").at(p).at("params")))
-        .bind(6, c.planners[p].label == c.baseline)
+        .bind(6, p == base)
         .run();
   }
   Statement cell(db,

@@ -86,7 +86,7 @@ void set_ratio(double& metric, double length, std::optional<double> reference) {
 void measure(const PlanResult& r, MapReference& map, Scratch& scratch,
              const MotionTimeParams& motion, const std::optional<TrajectoryVerdict>& verdict,
              RunOutput& out) {
-  PathMetrics m = compute_path_metrics(map.grid(), r.path, motion, 0, r.waypoints_before_sampling);
+  PathMetrics m = compute_path_metrics(map.grid(), r.path, motion, r.waypoints_before_sampling);
   if (verdict) apply_trajectory_verdict(*verdict, map.grid().cell_edge(), m);
   const auto values = metric_values(m);
   for (std::size_t i = 0; i < values.size(); ++i) {

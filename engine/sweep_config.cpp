@@ -1,5 +1,7 @@
 #include "engine/sweep_config.h"
 
+#include <stdexcept>
+
 #include "core/json_text.h"
 #include "core/rng.h"
 
@@ -104,8 +106,21 @@ json config_as_run(const SweepConfig& c) {
   return out;
 }
 
-std::string config_hash(const SweepConfig& c) {
-  json as_run = config_as_run(c);
+std::optional<std::size_t> planner_index(const SweepConfig& c, const std::string& label) {
+  for (std::size_t p = 0; p < c.planners.size(); ++p)
+    if (c.planners[p].label == label) return p;
+  return std::nullopt;
+}
+
+std::size_t baseline_index(const SweepConfig& c) {
+  const auto base = planner_index(c, c.baseline);
+  if (!base) throw std::logic_error("baseline \"" + c.baseline + "\" is no planner of the config");
+  return *base;
+}
+
+std::string config_hash(const SweepConfig& c) { return config_hash_of(config_as_run(c)); }
+
+std::string config_hash_of(json as_run) {
   as_run.erase("sources");  // commentary: a reworded source is the same sweep
   const std::uint64_t h = stable_hash(json_text(as_run));
   char buf[17];

@@ -2,9 +2,11 @@
 // A sweep's configuration: what maps, which planners, how many of each; its canonical form (the
 // config as run) and hash. Read from JSON by engine/config_loader.h.
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,9 @@ struct PlannerScope {
   bool everywhere() const {
     return generators.empty() && sizes.empty() && densities.empty() && maps_per_cell == 0;
   }
+  // Of a listed cell's `maps`, how many the planner runs on (the plan's scoped_maps and the size
+  // estimate both count with it).
+  int maps_in(int maps) const { return maps_per_cell > 0 ? std::min(maps_per_cell, maps) : maps; }
 };
 
 // One generator of the sweep: a name, or {"name": ..., "params": {...}} in the config.
@@ -120,5 +125,14 @@ nlohmann::json looser_json(const std::vector<ModelDeviation>& deviations);
 // commentary). Only the generators the sweep uses enter it, so a generator or parameter added to
 // the registry leaves journals valid.
 std::string config_hash(const SweepConfig& config);
+// The config index of the planner labelled `label`, if there is one.
+std::optional<std::size_t> planner_index(const SweepConfig& config, const std::string& label);
+// The config index of the baseline, which the loader makes sure is one of the planners (throws
+// std::logic_error for a config that did not come through it with one).
+std::size_t baseline_index(const SweepConfig& config);
+
+// The same of a config as run as JSON (a report's "config"): the one place the hash is made and
+// formatted, 16 hex digits.
+std::string config_hash_of(nlohmann::json as_run);
 
 }  // namespace agv

@@ -82,7 +82,7 @@ int scoped_maps(const PlannerEntry& planner, const SweepCell& cell) {
   if (!listed(only.generators, cell.generator) || !listed(only.sizes, cell.size) ||
       !listed(only.densities, cell.density))
     return 0;
-  return only.maps_per_cell > 0 ? std::min(only.maps_per_cell, maps_per_cell) : maps_per_cell;
+  return only.maps_in(maps_per_cell);
 }
 
 std::int64_t scheduled_runs(const SweepConfig& config, const SweepPlan& plan) {

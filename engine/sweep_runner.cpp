@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -27,15 +28,6 @@ void check_shard(const SweepOptions& options) {
   if (options.shard_count < 1 || options.shard_index < 0 ||
       options.shard_index >= options.shard_count)
     throw InputError("--shard: index must be in [0, count)");
-}
-
-// The journal this call writes: a resumed sweep appends to the one it restores.
-std::string journal_path_of(const SweepOptions& options) {
-  if (options.resume_path.empty()) return options.runs_path;
-  if (!options.runs_path.empty() && options.runs_path != options.resume_path)
-    throw InputError(
-        "--resume: the journal is appended to; --runs-out must be empty or the same file");
-  return options.resume_path;
 }
 
 // The map tasks of this call's shard with a planner still to run, and how many runs they hold
@@ -135,6 +127,20 @@ std::optional<std::pair<DecodedRecord, DecodedRecord>> decode_reply(JournalDecod
   }
 }
 
+// A lost run's message: why, and the parent's wall-clock wait beside the CPU time its slot
+// holds (the CPU time unknown when the worker's clock could not be read).
+std::string lost_run_message(const WorkerProcess::Reply& reply) {
+  char clocks[96];
+  if (reply.cpu_ns >= 0)
+    std::snprintf(clocks, sizeof clocks, " (wall %.3f s, CPU %.3f s)",
+                  static_cast<double>(reply.wall_ns) * 1e-9,
+                  static_cast<double>(reply.cpu_ns) * 1e-9);
+  else
+    std::snprintf(clocks, sizeof clocks, " (wall %.3f s, CPU time unknown)",
+                  static_cast<double>(reply.wall_ns) * 1e-9);
+  return reply.message + clocks;
+}
+
 // Runs the task's pending planners in this thread's worker process. A run the worker does not answer (it hung, died or sent garbage) is recorded here with
 // its outcome, and a fresh worker takes the task's remaining planners. A run an interruption cut
 // short is not recorded: the task's remaining planners stay pending for a resume.
@@ -172,8 +178,8 @@ TaskDone run_task_isolated(SweepState& s, WorkerProcess& process, double hard_li
         MapSlot& ms = s.results.map(task);
         if (!ms.done) ms = regenerate_map_slot(s.context, task);
         if (!facts.slot.done) facts.slot = ms;
-        RunSlot slot = lost_run_slot(reply.outcome, reply.wall_ns);
-        recorded.push_back({p, slot, reply.message});
+        RunSlot slot = lost_run_slot(reply.outcome, reply.cpu_ns);
+        recorded.push_back({p, slot, lost_run_message(reply)});
         s.results.store(task, p, std::move(slot), ms);
       }
       ++s.executed;
@@ -320,6 +326,14 @@ bool run_tasks(SweepState& state, const Todo& todo, const SweepOptions& options,
 }
 
 }  // namespace
+
+std::string journal_path_of(const SweepOptions& options) {
+  if (options.resume_path.empty()) return options.runs_path;
+  if (!options.runs_path.empty() && options.runs_path != options.resume_path)
+    throw InputError(
+        "--resume: the journal is appended to; --runs-out must be empty or the same file");
+  return options.resume_path;
+}
 
 void run_sweep(const SweepConfig& config, SweepResults& res, const SweepOptions& options) {
   check_shard(options);

@@ -41,6 +41,10 @@ struct SweepOptions {
   IsolationOptions isolation;
 };
 
+// The journal a sweep with these options writes ("" = none): a resumed sweep appends to the one
+// it restores. Throws InputError when runs_path names another file.
+std::string journal_path_of(const SweepOptions& options);
+
 // Runs the sweep into `results` (empty_results of the config, whose plan and hash it uses),
 // handing it to the journal and options.sinks as it goes. Throws InputError for bad configs and
 // std::runtime_error for failures such as a generator that cannot produce a solvable map (then

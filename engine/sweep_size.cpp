@@ -62,8 +62,7 @@ SweepSize sweep_size(const SweepConfig& config) {
                         : static_cast<double>(std::set(only.begin(), only.end()).size());
   };
   for (const auto& p : config.planners) {
-    const int maps = p.only.maps_per_cell > 0 ? std::min(p.only.maps_per_cell, config.maps_per_cell)
-                                              : config.maps_per_cell;
+    const int maps = p.only.maps_in(config.maps_per_cell);
     size.scheduled_runs += listed(p.only.generators, static_cast<std::size_t>(generated)) *
                            listed(p.only.sizes, config.sizes.size()) *
                            listed(p.only.densities, config.densities.size()) * maps;

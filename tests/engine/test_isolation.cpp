@@ -177,8 +177,12 @@ TEST(Isolation, EveryFaultCostsOneRunAndIsRecorded) {
   if (!kSanitized) names.push_back("test_hog");
   const SweepConfig config = faulty_config(names);
   const double hard = 2.0;  // room for the hog to reach its cap on a loaded machine
+  SweepOptions options = isolated(hard);
+  options.runs_path =
+      (std::filesystem::temp_directory_path() / ("agv_faults_" + std::to_string(::getpid())))
+          .string();
   const auto t0 = std::chrono::steady_clock::now();
-  const SweepResults r = run_sweep(config, isolated(hard));
+  const SweepResults r = run_sweep(config, options);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_TRUE(r.complete);
   // astar and dijkstra (first and last) are untouched by their neighbours' faults.
@@ -195,14 +199,30 @@ TEST(Isolation, EveryFaultCostsOneRunAndIsRecorded) {
         << "timeouts " << hog[static_cast<int>(Outcome::timeout)] << ", crashes "
         << hog[static_cast<int>(Outcome::crash)];
   }
-  // Every run that timed out was recorded within 1.25x the hard limit (its wall time is its
-  // plan_time_ns).
+  // A run that timed out spun on the CPU until it was killed: its planning time is the worker's
+  // CPU time, like every other run's (never more than the wall-clock wait, the hard limit and
+  // the kill's latency).
   for (std::int64_t t = 0; t < r.plan.map_tasks(); ++t) {
     const RunSlot& s = r.run(t, 1);
     if (s.outcome == Outcome::timeout) {
+      EXPECT_GT(s.plan_time_ns, 0);
       EXPECT_LE(static_cast<double>(s.plan_time_ns) / 1e9, 1.25 * hard);
     }
   }
+  // Each lost run's message gives the wall-clock wait beside that CPU time.
+  std::ifstream in(options.runs_path);
+  int lost = 0, with_clocks = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("killed at the hard limit") == std::string::npos &&
+        line.find("worker killed by signal") == std::string::npos)
+      continue;
+    ++lost;
+    if (line.find(" (wall ") != std::string::npos && line.find(", CPU ") != std::string::npos)
+      ++with_clocks;
+  }
+  EXPECT_GE(lost, 8);  // the hangs and the segfaults at least
+  EXPECT_EQ(with_clocks, lost);
+  std::filesystem::remove(options.runs_path);
   std::cout << "isolated sweep with " << hang[static_cast<int>(Outcome::timeout)] << " hangs took "
             << wall << " s\n";
 }

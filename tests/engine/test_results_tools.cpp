@@ -163,6 +163,16 @@ TEST(Compare, TwoRunsOfOneConfigHaveNoNonTimingDifference) {
   EXPECT_EQ(self.exit_code(), 0);
 }
 
+// compare reads a sweep's journals by the hash of the report's config: the journals' own, also
+// for a config with "sources" commentary (which the hash leaves out).
+TEST(Compare, AReportNamesItsJournalsConfigHashAlsoWithSources) {
+  json with_sources = tiny_config(3);
+  with_sources["sources"] = {{"paper", "000"}};
+  const Sweep s = run_tiny(with_sources);
+  EXPECT_EQ(report_config_hash(s.report), config_hash(s.config));
+  EXPECT_EQ(report_config_hash(s.report), s.results.config_hash);
+}
+
 TEST(Compare, AnAStarParameterChangeIsListedUnderAStarOnly) {
   const Sweep a = run_tiny(tiny_config(3)), b = run_tiny(tiny_config(3, "octile"));
   const ReportComparison c = compare_reports(a.report, b.report, nullptr, nullptr, std::nullopt);

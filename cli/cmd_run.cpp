@@ -197,10 +197,12 @@ int command_run(const RunCommand& cmd) {
   SweepResults results = empty_results(config);
   // The sinks (engine/sweep_sink.h) after the journal: the report, then the database that reads
   // it, then the progress display.
-  ReportSink report(config, config.report_path);
+  ReportSink report(config, config.report_path, !cmd.db.empty());
   std::optional<DatabaseSink> database;
   ProgressSink progress;
   options.sinks.push_back(&report);
+  // The database reads every run's slot at the end (issue 46 stage 3b streams it instead).
+  options.release_cells = cmd.db.empty();
   if (!cmd.db.empty()) options.sinks.push_back(&database.emplace(config, cmd.db, "--db", report));
   if (!cmd.quiet) {
     std::fprintf(stderr, "agvbench: sweep \"%s\": %s\n", config.name.c_str(),

@@ -209,37 +209,100 @@ json paired_cell_json(const SweepConfig& config, const SweepResults& r, const Sw
   return out;
 }
 
+json cell_report_json(const SweepConfig& config, const SweepResults& r, const SweepCell& cell) {
+  std::vector<double> fractions;
+  std::int64_t rejections = 0, maps = 0;
+  for (int m = 0; m < cell.maps; ++m) {
+    const MapSlot& ms =
+        r.cells[static_cast<std::size_t>(cell.index)].maps[static_cast<std::size_t>(m)];
+    if (!ms.done) continue;
+    ++maps;
+    rejections += ms.rejections;
+    fractions.push_back(ms.obstacle_fraction);
+  }
+  json planners = json::array();
+  // A planner scoped out of this cell has no entry in it (rather than one with no runs).
+  for (std::size_t p = 0; p < r.labels.size(); ++p)
+    if (r.maps_of(cell, p) > 0) planners.push_back(planner_cell_json(r, cell, p, config.planners[p]));
+  return {{"cell", cell.key},
+          {"generator", cell.generator},
+          {"width", cell.size.width},
+          {"height", cell.size.height},
+          {"density", cell.density},
+          {"maps", maps},
+          {"rejections", rejections},
+          {"obstacle_fraction", summary_json(summarize(fractions))},
+          {"planners", planners},
+          {"paired", paired_cell_json(config, r, cell)}};
+}
+
+double mean_of(double sum, std::int64_t count) {
+  return count > 0 ? sum / static_cast<double>(count) : kNaN;
+}
+
+void append(PlannerTally& to, const PlannerTally& from) {
+  to.runs += from.runs;
+  to.successes += from.successes;
+  const auto extend = [](std::vector<double>& a, const std::vector<double>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+  };
+  extend(to.plan_time_us, from.plan_time_us);
+  const double turns[] = {to.turns_sum, from.turns_sum};
+  const double checks[] = {to.checks_sum, from.checks_sum};
+  to.turns_sum = compensated_sum(turns);
+  to.checks_sum = compensated_sum(checks);
+  extend(to.length, from.length);
+  extend(to.baseline_length, from.baseline_length);
+}
+
+// What the summary table takes of each planner's runs in the cell, in map order.
+std::vector<PlannerTally> planner_tallies(const SweepConfig& config, const SweepResults& r,
+                                          const SweepCell& cell) {
+  const std::size_t base = baseline_index(config);
+  const std::size_t il = metric_index("path_length"), it = metric_index("turns");
+  std::vector<PlannerTally> tallies(r.labels.size());
+  for (std::size_t p = 0; p < r.labels.size(); ++p) {
+    PlannerTally& t = tallies[p];
+    std::vector<double> turns, checks;
+    for (int m = 0; m < cell.maps; ++m) {
+      const RunSlot& s = r.run(cell, m, p);
+      if (!s.done) continue;
+      ++t.runs;
+      t.plan_time_us.push_back(static_cast<double>(s.plan_time_ns) / 1e3);
+      if (s.outcome != Outcome::success) continue;
+      ++t.successes;
+      turns.push_back(s.metrics[it]);
+      checks.push_back(slot_value(s, "collision_checks"));
+      const RunSlot& sb = r.run(cell, m, base);
+      if (sb.done && sb.outcome == Outcome::success) {
+        t.length.push_back(s.metrics[il]);
+        t.baseline_length.push_back(sb.metrics[il]);
+      }
+    }
+    t.turns_sum = compensated_sum(turns);
+    t.checks_sum = compensated_sum(checks);
+    // A released cell keeps its tallies to the end of the sweep: no spare capacity.
+    for (auto* v : {&t.plan_time_us, &t.length, &t.baseline_length}) v->shrink_to_fit();
+  }
+  return tallies;
+}
+
 }  // namespace
 
-json build_report(const SweepConfig& config, const SweepResults& r) {
-  json cells = json::array();
-  for (const auto& cell : r.plan.cells) {
-    std::vector<double> fractions;
-    std::int64_t rejections = 0, maps = 0;
-    for (int m = 0; m < cell.maps; ++m) {
-      const MapSlot& ms =
-          r.cells[static_cast<std::size_t>(cell.index)].maps[static_cast<std::size_t>(m)];
-      if (!ms.done) continue;
-      ++maps;
-      rejections += ms.rejections;
-      fractions.push_back(ms.obstacle_fraction);
-    }
-    json planners = json::array();
-    // A planner scoped out of this cell has no entry in it (rather than one with no runs).
-    for (std::size_t p = 0; p < r.labels.size(); ++p)
-      if (r.maps_of(cell, p) > 0)
-        planners.push_back(planner_cell_json(r, cell, p, config.planners[p]));
-    cells.push_back({{"cell", cell.key},
-                     {"generator", cell.generator},
-                     {"width", cell.size.width},
-                     {"height", cell.size.height},
-                     {"density", cell.density},
-                     {"maps", maps},
-                     {"rejections", rejections},
-                     {"obstacle_fraction", summary_json(summarize(fractions))},
-                     {"planners", planners},
-                     {"paired", paired_cell_json(config, r, cell)}});
-  }
+CellDigest digest_cell(const SweepConfig& config, const SweepResults& r, const SweepCell& cell) {
+  CellDigest d;
+  d.report_cbor = json::to_cbor(cell_report_json(config, r, cell));
+  const Coverage c = cell_coverage_of(r, cell);
+  d.runs_present = c.runs_present;
+  d.maps_missing = c.maps_missing;
+  d.tallies = planner_tallies(config, r, cell);
+  return d;
+}
+
+namespace {
+
+// The report with an empty "cells" array.
+json report_frame(const SweepConfig& config, const SweepResults& r) {
   const Coverage coverage = coverage_of(r);
   json report = {
       {"schema_version", kReportSchemaVersion},
@@ -254,7 +317,7 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
        {{"cells", r.plan.cells.size()},
         {"maps", r.plan.map_tasks()},
         {"runs", coverage.runs_present}}},
-      {"cells", cells},
+      {"cells", json::array()},
       {"environment", environment_json(r.threads)},
       {"timing",
        {{"wall_s", r.wall_s},
@@ -262,6 +325,46 @@ json build_report(const SweepConfig& config, const SweepResults& r) {
         {"runs_per_s", r.wall_s > 0 ? static_cast<double>(r.executed_runs) / r.wall_s : 0.0}}}};
   if (r.shard_count > 1) report["shard"] = {{"index", r.shard_index}, {"count", r.shard_count}};
   return report;
+}
+
+json cell_entry(const SweepConfig& config, const SweepResults& r, const SweepCell& cell) {
+  const auto& digest = r.cells[static_cast<std::size_t>(cell.index)].digest;
+  return digest ? json::from_cbor(digest->report_cbor) : cell_report_json(config, r, cell);
+}
+
+}  // namespace
+
+json build_report(const SweepConfig& config, const SweepResults& r) {
+  json report = report_frame(config, r);
+  json& cells = report["cells"];
+  for (const auto& cell : r.plan.cells) cells.push_back(cell_entry(config, r, cell));
+  return report;
+}
+
+std::string report_text(const SweepConfig& config, const SweepResults& r) {
+  std::string frame = json_text(report_frame(config, r), 1);
+  // "cells" sorts first among the report's keys: the frame opens with it.
+  const std::string empty = "{\n \"cells\": []";
+  if (frame.compare(0, empty.size(), empty) != 0)
+    throw std::logic_error("report_text: the report no longer opens with its cells");
+  std::string text = "{\n \"cells\": [";
+  bool first = true;
+  for (const auto& cell : r.plan.cells) {
+    // An element of an array in the report's "cells" sits two levels deep: its standalone text
+    // with every line indented by two.
+    const std::string entry = json_text(cell_entry(config, r, cell), 1);
+    text += first ? "\n  " : ",\n  ";
+    first = false;
+    for (const char c : entry) {
+      text += c;
+      if (c == '\n') text += "  ";
+    }
+  }
+  if (!r.plan.cells.empty()) text += "\n ]";
+  else text += "]";
+  text.append(frame, empty.size(), std::string::npos);
+  text += "\n";
+  return text;
 }
 
 void write_json_atomic(const json& document, const std::string& path) {
@@ -287,39 +390,38 @@ json deterministic_part(const json& report) {
 
 std::string summary_table(const SweepConfig& config, const SweepResults& r) {
   const std::size_t base = baseline_index(config);
+  // The cells' tallies (a released cell's from its digest), one planner's at a time over the
+  // cells in order: a whole sweep's tallies are never copied at once.
+  std::vector<std::vector<PlannerTally>> live(r.plan.cells.size());
+  for (const auto& cell : r.plan.cells)
+    if (!r.cells[static_cast<std::size_t>(cell.index)].digest)
+      live[static_cast<std::size_t>(cell.index)] = planner_tallies(config, r, cell);
+  const auto sweep_tally = [&](std::size_t p) {
+    PlannerTally t;
+    for (const auto& cell : r.plan.cells) {
+      const auto i = static_cast<std::size_t>(cell.index);
+      append(t, r.cells[i].digest ? r.cells[i].digest->tallies[p] : live[i][p]);
+    }
+    return t;
+  };
   std::ostringstream out;
   char line[256];
   // %11s: "µ" is two bytes and one column.
   std::snprintf(line, sizeof line, "%-24s %8s %8s %10s %12s %8s %12s %11s\n", "planner", "runs",
                 "success", "len/base", "[95% CI]", "turns", "checks", "median µs");
   out << line;
-  const std::size_t il = metric_index("path_length"), it = metric_index("turns");
   for (std::size_t p = 0; p < r.labels.size(); ++p) {
-    std::int64_t runs = 0, ok = 0;
-    std::vector<double> turns, checks, times, a, b;
-    for (std::int64_t task = 0; task < r.plan.map_tasks(); ++task) {
-      const RunSlot& s = r.run(task, p);
-      if (!s.done) continue;
-      ++runs;
-      times.push_back(static_cast<double>(s.plan_time_ns) / 1e3);
-      if (s.outcome != Outcome::success) continue;
-      ++ok;
-      turns.push_back(s.metrics[it]);
-      checks.push_back(slot_value(s, "collision_checks"));
-      const RunSlot& sb = r.run(task, base);
-      if (sb.done && sb.outcome == Outcome::success) {
-        a.push_back(s.metrics[il]);
-        b.push_back(sb.metrics[il]);
-      }
-    }
-    const PairedComparison c = compare(a, b, *find_metric_spec("path_length"));
+    const PlannerTally t = sweep_tally(p);
+    const PairedComparison c =
+        compare(t.length, t.baseline_length, *find_metric_spec("path_length"));
     char ci[64];
     std::snprintf(ci, sizeof ci, "[%.3f,%.3f]", c.geo_mean_ci95.lo, c.geo_mean_ci95.hi);
     std::snprintf(line, sizeof line, "%-24s %8lld %7.1f%% %10.4f %12s %8.2f %12.0f %10.1f\n",
-                  r.labels[p].c_str(), static_cast<long long>(runs),
-                  runs ? 100.0 * static_cast<double>(ok) / static_cast<double>(runs) : 0.0,
-                  c.geo_mean_ratio, p == base ? "(baseline)" : ci, summarize(turns).mean,
-                  summarize(checks).mean, summarize(times).median);
+                  r.labels[p].c_str(), static_cast<long long>(t.runs),
+                  t.runs ? 100.0 * static_cast<double>(t.successes) / static_cast<double>(t.runs)
+                         : 0.0,
+                  c.geo_mean_ratio, p == base ? "(baseline)" : ci, mean_of(t.turns_sum, t.successes),
+                  mean_of(t.checks_sum, t.successes), summarize(t.plan_time_us).median);
     out << line;
   }
   return out.str();

@@ -12,7 +12,17 @@ namespace agv {
 
 inline constexpr int kReportSchemaVersion = 2;
 
+// Cells released during the sweep enter by their digests.
 nlohmann::json build_report(const SweepConfig& config, const SweepResults& results);
+
+// json_text(build_report(...), 1) and a newline, the report file's text, made one cell at a time:
+// no more than one cell's document exists at once (a released cell's from its digest).
+std::string report_text(const SweepConfig& config, const SweepResults& results);
+
+// What stays of a finished cell once its run slots are freed (engine/sweep_results.h): its report
+// entry, coverage and summary-table tallies, as build_report and summary_table would make them.
+CellDigest digest_cell(const SweepConfig& config, const SweepResults& results,
+                       const SweepCell& cell);
 
 // A statistic as the report writes it: null where it is not finite (JSON has no NaN or inf).
 nlohmann::json number_or_null(double v);

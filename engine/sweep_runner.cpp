@@ -19,6 +19,7 @@
 #include "engine/journal.h"
 #include "engine/journal_sink.h"
 #include "engine/map_task.h"
+#include "engine/report.h"
 
 namespace agv {
 
@@ -232,8 +233,14 @@ class FirstFailure {
 // tasks each cell has still to finish.
 class SinkCalls {
  public:
-  SinkCalls(std::vector<SweepSink*> sinks, const SweepResults& results, const Todo& todo)
-      : sinks_(std::move(sinks)), results_(results), tasks_left_(results.plan.cells.size(), 0) {
+  // release: a finished cell's run slots are freed once the sinks had it, its digest kept.
+  SinkCalls(std::vector<SweepSink*> sinks, const SweepConfig& config, SweepResults& results,
+            const Todo& todo, bool release)
+      : sinks_(std::move(sinks)),
+        config_(config),
+        results_(results),
+        tasks_left_(results.plan.cells.size(), 0),
+        release_(release) {
     for (const std::int64_t t : todo.tasks) ++tasks_left_[cell_index(t)];
   }
 
@@ -249,6 +256,7 @@ class SinkCalls {
     if (!whole || --tasks_left_[cell_index(task)] > 0) return;
     const SweepCell& cell = results_.plan.cell_of(task);
     for (SweepSink* sink : sinks_) sink->cell_done(cell, results_);
+    if (release_) results_.release(cell, digest_cell(config_, results_, cell));
   }
   // Every sink's end of the runs, also after a failure; returns the first SinkError's message.
   std::string end_runs() {
@@ -272,8 +280,10 @@ class SinkCalls {
   }
 
   std::vector<SweepSink*> sinks_;
-  const SweepResults& results_;
+  const SweepConfig& config_;
+  SweepResults& results_;
   std::vector<std::int64_t> tasks_left_;  // by cell index
+  bool release_;
   std::mutex mutex_;
 };
 
@@ -294,13 +304,7 @@ bool run_tasks(SweepState& state, const Todo& todo, const SweepOptions& options,
     return w;
   });
   std::atomic<bool> stopped{false};
-  tbb::parallel_for(std::size_t{0}, todo.tasks.size(), [&](std::size_t i) {
-    if (failure.failed()) return;
-    if ((options.stop != nullptr && options.stop->load()) || state.cut.load()) {
-      stopped = true;
-      return;
-    }
-    const std::int64_t task = todo.tasks[i];
+  const auto run_task = [&](std::int64_t task) {
     // Worked out once here (no other thread writes this task's slots) and handed on.
     const std::vector<std::size_t> planners = state.results.pending_planners(task);
     try {
@@ -321,7 +325,32 @@ bool run_tasks(SweepState& state, const Todo& todo, const SweepOptions& options,
     } catch (const std::exception& e) {
       failure.record(state.results.plan, task, e);
     }
-  });
+  };
+  // Every thread takes the next task in plan order as it becomes free (rather than oneTBB
+  // splitting the range, which starts the second thread half-way through the sweep): a cell's
+  // tasks run together and the cells finish one after another, at most one task per thread in
+  // flight, so each finished cell can be summarised and released.
+  std::atomic<std::size_t> next{0};
+  // A cell's run slots are allocated as its first task is taken, before any thread reads them.
+  std::mutex allocation;
+  const auto allocate_cell = [&](std::int64_t task) {
+    std::lock_guard lock(allocation);
+    state.results.allocate(state.results.plan.cell_of(task));
+  };
+  tbb::parallel_for(
+      0, state.results.threads,
+      [&](int) {
+        for (std::size_t i; (i = next++) < todo.tasks.size();) {
+          if (failure.failed()) return;
+          if ((options.stop != nullptr && options.stop->load()) || state.cut.load()) {
+            stopped = true;
+            return;
+          }
+          allocate_cell(todo.tasks[i]);
+          run_task(todo.tasks[i]);
+        }
+      },
+      tbb::simple_partitioner());
   return stopped.load() || state.cut.load();
 }
 
@@ -359,7 +388,7 @@ void run_sweep(const SweepConfig& config, SweepResults& res, const SweepOptions&
                             static_cast<std::size_t>(res.threads));
 
   const Todo todo = pending_tasks(res, options);
-  SinkCalls calls(std::move(sinks), res, todo);
+  SinkCalls calls(std::move(sinks), config, res, todo, options.release_cells);
   calls.start({config, res, todo.runs, restored, restored_messages});
   SweepState state(context, res);
   FirstFailure failure;

@@ -39,6 +39,11 @@ struct SweepOptions {
   // the runs are not recorded (a resume runs them); in process they end at their deadline.
   const std::atomic<bool>* cut_short = nullptr;
   IsolationOptions isolation;
+  // Once a cell's tasks of this call are done and the sinks had it, keep its digest (report
+  // entry, coverage, summary tallies: engine/report.h digest_cell) and free its run slots, so
+  // memory stays bounded however many cells the sweep has. The results' slots of such a cell
+  // are then gone: set it only when nothing reads them afterwards (`run` sets it unless --db).
+  bool release_cells = false;
 };
 
 // The journal a sweep with these options writes ("" = none): a resumed sweep appends to the one

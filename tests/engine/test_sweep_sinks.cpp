@@ -17,12 +17,14 @@
 #include "engine/report.h"
 #include "engine/report_sink.h"
 #include "engine/sweep_runner.h"
+#include "core/json_text.h"
 
 namespace agv {
 namespace sink_tests {  // a name of its own: test files share a unity build
 namespace {
 
 namespace fs = std::filesystem;
+using nlohmann::json;
 
 class Scratch {
  public:
@@ -145,7 +147,7 @@ TEST(SweepSinks, AFailingSinkStopsTheSweepWhichEndsIncompleteNamingIt) {
   Scratch dir("failing");
   ProbeSink failing, after;
   failing.fail_at = 3;
-  ReportSink report(config, dir.path("report.json"));
+  ReportSink report(config, dir.path("report.json"), true);
   SweepOptions options;
   options.threads = 1;
   options.sinks = {&failing, &after, &report};
@@ -204,7 +206,7 @@ TEST(SweepSinks, TheDatabaseHasEveryMessageAlsoAfterAResume) {
   first.runs_path = dir.path("runs.jsonl");
   first.sinks = {&stopper};
   ASSERT_TRUE(run_sweep(config, first).interrupted);
-  ReportSink report(config, dir.path("report.json"));
+  ReportSink report(config, dir.path("report.json"), true);
   DatabaseSink database(config, dir.path("results.db"), "--db", report);
   SweepOptions resume;
   resume.resume_path = dir.path("runs.jsonl");
@@ -217,6 +219,76 @@ TEST(SweepSinks, TheDatabaseHasEveryMessageAlsoAfterAResume) {
   EXPECT_EQ(count_rows(dir.path("results.db"),
                        "select count(*) from runs where message like 'max_iterations%'"),
             failures);
+}
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Released cells (issue 46 stage 3a): each finished cell is summarised into its digest and its
+// run slots freed; the report, written one cell at a time, is byte for byte the document's text,
+// and its non-timing part is that of a sweep that kept every slot, on 1 and 2 threads.
+TEST(ReleasedCells, TheReportIsTheSameAsWhenEverySlotIsKept) {
+  const SweepConfig config = two_cells();
+  Scratch dir("released");
+  json kept_part;
+  {
+    SweepOptions options;
+    options.threads = 1;
+    const SweepResults kept = run_sweep(config, options);
+    kept_part = deterministic_part(build_report(config, kept));
+    EXPECT_EQ(report_text(config, kept), json_text(build_report(config, kept), 1) + "\n");
+  }
+  for (const int threads : {1, 2}) {
+    ReportSink report(config, dir.path("report.json"), false);
+    ProbeSink probe;
+    SweepOptions options;
+    options.threads = threads;
+    options.release_cells = true;
+    options.sinks = {&report, &probe};
+    const SweepResults r = run_sweep(config, options);
+    for (const auto& cell : r.plan.cells) EXPECT_TRUE(r.released(cell)) << cell.key;
+    EXPECT_THROW(static_cast<void>(r.run(0, 0)), std::logic_error);
+    const std::string written = file_text(dir.path("report.json"));
+    EXPECT_EQ(written, json_text(build_report(config, r), 1) + "\n");
+    EXPECT_EQ(deterministic_part(json::parse(written)), kept_part) << threads << " threads";
+    EXPECT_TRUE(r.complete);
+    EXPECT_EQ(coverage_of(r).runs_present, 12);
+  }
+}
+
+// A sweep cut short keeps the slots of the cells it did not finish and releases the others; the
+// resume of its journal gives the uninterrupted report.
+TEST(ReleasedCells, AnInterruptedSweepResumesToTheSameReport) {
+  const SweepConfig config = two_cells();
+  Scratch dir("released_resume");
+  json whole;
+  {
+    SweepOptions options;
+    whole = deterministic_part(build_report(config, run_sweep(config, options)));
+  }
+  std::atomic<bool> stop{false};
+  ProbeSink stopper;
+  stopper.stop = &stop;
+  stopper.stop_after = 5;  // cell 0 finished, cell 1 begun
+  SweepOptions first;
+  first.threads = 1;
+  first.stop = &stop;
+  first.release_cells = true;
+  first.runs_path = dir.path("runs.jsonl");
+  first.sinks = {&stopper};
+  const SweepResults cut = run_sweep(config, first);
+  ASSERT_TRUE(cut.interrupted);
+  EXPECT_TRUE(cut.released(cut.plan.cells[0]));
+  EXPECT_FALSE(cut.released(cut.plan.cells[1]));
+  EXPECT_EQ(coverage_of(cut).runs_present, 6 + 2);  // cell 0: 6 runs; cell 1's first map: 2
+  SweepOptions resume;
+  resume.resume_path = dir.path("runs.jsonl");
+  resume.release_cells = true;
+  const SweepResults r = run_sweep(config, resume);
+  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(deterministic_part(build_report(config, r)), whole);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "core/json_text.h"
 #include "core/text_file.h"
 #include "engine/file_writes.h"
+#include "engine/journal_lines.h"
 #include "engine/run_record.h"
 
 namespace agv {
@@ -23,19 +24,20 @@ using nlohmann::json;
 JournalWriter::JournalWriter(const std::string& path, bool append) : path_(path) {
   if (path.empty()) return;
   namespace fs = std::filesystem;
+  if (journal_is_gzip(path)) gzip_ = std::make_unique<GzipMemberWriter>();
   if (append) {
-    // Cut a torn last line: keep everything up to the last newline.
+    // Cut a torn tail (a line without its newline, a gzip member cut short): keep every whole
+    // line or member.
     std::error_code ec;
     const std::uintmax_t size = fs::file_size(path, ec);
     if (!ec && size > 0) {
-      std::ifstream in(path, std::ios::binary);
-      const std::string text((std::istreambuf_iterator<char>(in)),
-                             std::istreambuf_iterator<char>());
-      const auto last = text.rfind('\n');
-      const std::uintmax_t keep = last == std::string::npos ? 0 : last + 1;
-      if (keep != text.size()) {
-        fs::resize_file(path, keep, ec);
-        if (ec) fail("cannot cut its torn last line", ec.value());
+      JournalLineReader reader(path);
+      std::string line;
+      while (reader.next(line)) {
+      }
+      if (reader.intact_bytes() != size) {
+        fs::resize_file(path, reader.intact_bytes(), ec);
+        if (ec) fail("cannot cut its torn tail", ec.value());
       }
     }
   }
@@ -67,9 +69,11 @@ void JournalWriter::sync_locked() {
 void JournalWriter::write(const std::string& lines) {
   std::lock_guard lock(mutex_);
   if (!failure_.empty()) throw JournalError(failure_);
+  const std::string member = gzip_ ? gzip_->member(lines) : std::string();
+  const std::string_view bytes = gzip_ ? std::string_view(member) : std::string_view(lines);
   std::size_t done = 0;
-  if (const int error = write_whole(fd_, lines, done); error != 0)
-    fail("write failed after " + std::to_string(done) + " of " + std::to_string(lines.size()) +
+  if (const int error = write_whole(fd_, bytes, done); error != 0)
+    fail("write failed after " + std::to_string(done) + " of " + std::to_string(bytes.size()) +
              " bytes",
          error);
   unsynced_ = true;
@@ -120,21 +124,16 @@ JournalStats for_each_journal_record(
     const std::string& path,
     const std::function<void(const DecodedRecord&, const std::string&)>& f) {
   require_regular_file(path, "journal");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("journal \"" + path + "\": " + std::strerror(errno));
+  // A torn tail (a last line without its newline, a gzip member cut short) was cut by a kill
+  // even when it parses. The writer cuts the journal back before it, so its runs must not count
+  // as restored (they would then be missing from the journal): they are run again.
+  JournalLineReader reader(path);
   JournalDecoder decoder;
   JournalStats stats;
   std::string line;
   std::int64_t line_no = 0;
-  while (std::getline(in, line)) {
+  while (reader.next(line)) {
     ++line_no;
-    // A last line without its newline was cut by a kill even when it parses. The writer cuts
-    // the journal back to its last newline, so its run must not count as restored (it would
-    // then be missing from the journal): it is run again.
-    if (in.eof()) {
-      if (!line.empty()) ++stats.torn_lines;
-      break;
-    }
     if (line.empty()) continue;
     const std::string where = path + ":" + std::to_string(line_no);
     // Records are written whole, newline included: a complete line that does not parse is a
@@ -144,6 +143,7 @@ JournalStats for_each_journal_record(
                        (stats.has_header && decoded.version != kJournalVersionV1);
     f(decoded, where);
   }
+  if (reader.torn()) ++stats.torn_lines;
   return stats;
 }
 
@@ -168,12 +168,11 @@ void refuse_changed_map_files(const std::string& path, const SweepResults& resul
   };
   try {
     JournalDecoder decoder;
-    std::ifstream in(path, std::ios::binary);
+    JournalLineReader reader(path);
     std::string line;
     std::int64_t line_no = 0;
-    while (std::getline(in, line)) {
+    while (reader.next(line)) {
       ++line_no;
-      if (in.eof()) break;
       const std::string where = path + ":" + std::to_string(line_no);
       const DecodedRecord d = decoder.decode_line(line, where);
       if (d.kind == DecodedRecord::Kind::header) {

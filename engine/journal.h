@@ -9,12 +9,14 @@
 #include <chrono>
 #include <functional>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "engine/gzip_members.h"
 #include "engine/run_record.h"
 #include "engine/sink_error.h"
 #include "engine/sweep_results.h"
@@ -39,8 +41,10 @@ class JournalWriter {
   static constexpr std::chrono::milliseconds kSyncInterval{1000};
 
   JournalWriter() = default;
-  // append = false truncates; append = true first cuts a torn last line (a record cut short by
-  // a kill) so the next record starts on a line of its own. Throws JournalError.
+  // append = false truncates; append = true first cuts a torn tail (a record cut short by a
+  // kill) so the next record starts on a line of its own. A journal is gzip-compressed, a member
+  // per write (engine/gzip_members.h), when the file already is, or when it is new or empty and
+  // its name ends in ".gz". Throws JournalError.
   JournalWriter(const std::string& path, bool append);
   // Writes to an open descriptor (owned from now on); `name` names it in messages.
   JournalWriter(int fd, std::string name);
@@ -66,6 +70,7 @@ class JournalWriter {
   std::chrono::steady_clock::time_point last_sync_{};
   bool unsynced_ = false;
   std::string failure_;  // the first failure, repeated by later writes
+  std::unique_ptr<GzipMemberWriter> gzip_;  // a gzip journal: a member per write
 };
 
 // A run's failure message, by (map task, planner index): journals carry it, the slots do not.

@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 build_packages=(g++ cmake ninja-build pkg-config git python3
   libeigen3-dev libtbb-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev
   libcli11-dev libpcg-cpp-dev libboost-dev libnanoflann-dev
-  libsqlite3-dev libssl-dev libompl-dev libyaml-cpp-dev libpng-dev)
+  libsqlite3-dev libssl-dev libompl-dev libyaml-cpp-dev libpng-dev zlib1g-dev)
 # What only the tests and report scripts run (plots, the HTML report in Chromium, sqlite3):
 # installed while the build compiles, which has no use for them.
 run_packages=(python3-matplotlib python3-plotly chromium sqlite3)

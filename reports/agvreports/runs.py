@@ -4,6 +4,7 @@ grouped by cell and planner. Standard library only.
 """
 
 import json
+import zlib
 
 from agvreports.cells import cell_key
 from agvreports.numeric import finite
@@ -129,59 +130,90 @@ class _Segment:
                 **({"message": r["message"]} if "message" in r else {})}
 
 
+def _gzip_members(f):
+    """The text of each whole member of a gzip journal (one per engine write: whole lines,
+    engine/gzip_members.h), in order; a member cut short at the end (a kill's) is left out."""
+    member, d = [], zlib.decompressobj(wbits=31)
+    while chunk := f.read(1 << 16):
+        while chunk:
+            try:
+                member.append(d.decompress(chunk))
+            except zlib.error as e:
+                raise ReportError(f"damaged gzip data: {e}") from None
+            if not d.eof:
+                break
+            yield b"".join(member).decode("utf-8")
+            member, chunk, d = [], d.unused_data, zlib.decompressobj(wbits=31)
+
+
+def _journal_lines(path):
+    """(number, line) of each whole line of a journal, plain or gzip; a torn tail is left out."""
+    with open(path, "rb") as f:
+        gzip = f.read(2) == b"\x1f\x8b"
+        f.seek(0)
+        if gzip:
+            lines = (line for text in _gzip_members(f) for line in text.splitlines(keepends=True))
+        else:
+            lines = (raw.decode("utf-8") for raw in f)
+        for n, raw in enumerate(lines, 1):
+            if not raw.endswith("\n"):
+                return  # torn last line
+            yield n, raw
+
+
 def journal_records(path):
     """Yield (line number, run record) for each run of RUNS.jsonl, version 1 or 2, each in one
     shape: planner (label), cell (key), map_index, outcome, metrics (name -> value, derived
     ones rebuilt; a version 1 record's nulls kept), timing {plan_time_ns, phases}, config_hash,
-    message. Raises ReportError naming the line; OSError and UnicodeDecodeError pass through to
-    the caller. A torn last line (no newline: a kill's) is skipped, as the engine does."""
+    message. RUNS.jsonl.gz (gzip, `--runs-out RUNS.jsonl.gz`) is read as well. Raises ReportError
+    naming the line; OSError and UnicodeDecodeError pass through to the caller. A torn tail (a
+    last line without its newline, a gzip member cut short: a kill's) is skipped, as the engine
+    does."""
     segment = None
-    with open(path, "r", encoding="utf-8") as f:
-        for n, raw in enumerate(f, 1):
-            if not raw.endswith("\n"):
-                break  # torn last line
-            line = raw.strip()
-            if not line:
-                continue
-            try:
-                r = json.loads(line)
-            except json.JSONDecodeError as e:
-                raise ReportError(f"line {n}: not valid JSON: {e.msg}") from None
-            if not isinstance(r, dict):
-                raise ReportError(f"line {n}: expected a JSON object (an agvbench --runs-out record)")
-            if "tool" in r or "journal_version" in r:
-                if r.get("tool") != "agvbench" or r.get("journal_version") not in JOURNAL_VERSIONS_READ:
-                    _refuse_version(r, n)
-                if r["journal_version"] == JOURNAL_VERSION:
-                    if r.get("record") != "header":
-                        raise ReportError(f"line {n}: a version 2 record naming its version must be its header")
-                    segment = _Segment(r, n)
-                    continue
-                # A version 1 record: self-contained.
-                for key in ("planner", "cell", "map_index", "outcome", "metrics"):
-                    _need(r, key, n)
-                if not isinstance(r["metrics"], dict):
-                    raise ReportError(f"line {n}.metrics: expected an object")
-                yield n, r
-                continue
-            if segment is None:
+    for n, raw in _journal_lines(path):
+        line = raw.strip()
+        if not line:
+            continue
+        try:
+            r = json.loads(line)
+        except json.JSONDecodeError as e:
+            raise ReportError(f"line {n}: not valid JSON: {e.msg}") from None
+        if not isinstance(r, dict):
+            raise ReportError(f"line {n}: expected a JSON object (an agvbench --runs-out record)")
+        if "tool" in r or "journal_version" in r:
+            if r.get("tool") != "agvbench" or r.get("journal_version") not in JOURNAL_VERSIONS_READ:
                 _refuse_version(r, n)
-            if r.get("record") == "map":
-                cell = segment.index(r, "cell", segment.cells, n)
-                facts = segment.maps.setdefault((cell, _need(r, "map_index", n, int)), {})
-                for k in ("optimal_length", "any_angle_length", "scen_optimum", "obstacle_fraction", "rejections"):
-                    if k in r:
-                        facts[k] = r[k]
+            if r["journal_version"] == JOURNAL_VERSION:
+                if r.get("record") != "header":
+                    raise ReportError(f"line {n}: a version 2 record naming its version must be its header")
+                segment = _Segment(r, n)
                 continue
-            if "record" in r:
-                raise ReportError(f"line {n}: unknown record kind {r['record']!r}")
-            yield n, segment.run(r, n)
+            # A version 1 record: self-contained.
+            for key in ("planner", "cell", "map_index", "outcome", "metrics"):
+                _need(r, key, n)
+            if not isinstance(r["metrics"], dict):
+                raise ReportError(f"line {n}.metrics: expected an object")
+            yield n, r
+            continue
+        if segment is None:
+            _refuse_version(r, n)
+        if r.get("record") == "map":
+            cell = segment.index(r, "cell", segment.cells, n)
+            facts = segment.maps.setdefault((cell, _need(r, "map_index", n, int)), {})
+            for k in ("optimal_length", "any_angle_length", "scen_optimum", "obstacle_fraction", "rejections"):
+                if k in r:
+                    facts[k] = r[k]
+            continue
+        if "record" in r:
+            raise ReportError(f"line {n}: unknown record kind {r['record']!r}")
+        yield n, segment.run(r, n)
 
 
 def config_hash(config):
     """The hash a journal's records carry for the report's `config` (agvbench compare's
     report_config_hash): 64-bit FNV-1a over the config as the engine writes it compactly, keys
-    sorted, non-ASCII characters as themselves."""
+    sorted, non-ASCII characters as themselves, "sources" (commentary) left out."""
+    config = {k: v for k, v in config.items() if k != "sources"}
     text = json.dumps(config, sort_keys=True, separators=(",", ":"), ensure_ascii=False)
     h = 0xcbf29ce484222325
     for byte in text.encode("utf-8"):

@@ -60,6 +60,36 @@ head -c -40 j.jsonl >t.jsonl && head -n 100 t.jsonl >j2.jsonl && tail -c 70 t.js
   && $py "$same" full.json final.json && $py "$journal_check" j2.jsonl $total \
   && ok "torn last line tolerated" || bad "torn last line"
 
+# A gzip journal (--runs-out J.jsonl.gz, a member per write): SIGKILL part way, then --resume
+# cuts the torn member and appends; the report equals the uninterrupted one, every run is in the
+# journal once, and gzip reads the whole file.
+for pct in 30 70; do
+  rm -f j.jsonl.gz final.json
+  "$bin" run config.json --threads 2 --out part.json --runs-out j.jsonl.gz --quiet &
+  pid=$!
+  want=$((total * pct / 100))
+  for _ in $(seq 1 600); do
+    n=$(gzip -dc j.jsonl.gz 2>/dev/null | grep -c '"planner":')
+    [ "${n:-0}" -ge "$want" ] && break
+    kill -0 $pid 2>/dev/null || break
+    sleep 0.01
+  done
+  kill -KILL $pid 2>/dev/null
+  wait $pid 2>/dev/null
+  "$bin" run config.json --threads 2 --out final.json --resume j.jsonl.gz --quiet \
+    && $py "$same" full.json final.json && $py "$journal_check" j.jsonl.gz $total \
+    && gzip -t j.jsonl.gz \
+    && ok "gzip journal: SIGKILL at ~$pct%, resumed: the uninterrupted report, every run once" \
+    || bad "gzip journal: SIGKILL at ~$pct%, resumed"
+done
+# A member cut in half by hand (a kill mid-write) is cut before appending.
+rm -f j.jsonl.gz
+"$bin" run config.json --threads 2 --out part.json --runs-out j.jsonl.gz --quiet
+head -c $(($(stat -c %s j.jsonl.gz) / 2)) j.jsonl.gz >j2.jsonl.gz
+"$bin" run config.json --threads 2 --out final.json --resume j2.jsonl.gz --quiet \
+  && $py "$same" full.json final.json && $py "$journal_check" j2.jsonl.gz $total && gzip -t j2.jsonl.gz \
+  && ok "gzip journal: torn member cut, resumed" || bad "gzip journal: torn member"
+
 # A journal of another config is refused.
 sed 's/"seed": 11/"seed": 12/' config.json >other.json
 "$bin" run other.json --out o.json --resume j.jsonl --quiet 2>err.txt

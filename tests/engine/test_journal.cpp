@@ -19,6 +19,7 @@
 #include "core/input_error.h"
 #include "engine/config_loader.h"
 #include "engine/journal.h"
+#include "engine/journal_lines.h"
 #include "engine/output_paths.h"
 #include "engine/report.h"
 #include "engine/run_record.h"
@@ -436,6 +437,66 @@ TEST(JournalFormat, AResumeAfterATornLineAppendsTheRestAndGivesTheSameReport) {
             deterministic_part(build_report(config, whole)));
   EXPECT_EQ(deterministic_part(build_report(config, again)),
             deterministic_part(build_report(config, whole)));
+}
+
+// --runs-out J.jsonl.gz (issue 46 stage 4b): the same lines as a plain journal, gzip-compressed a
+// member per write; a member cut short is left out and cut by a resume, which then gives the
+// uninterrupted report; bytes that are not gzip further on are damage, named.
+TEST(JournalFormat, AGzipJournalHoldsThePlainLinesAndResumesAfterATornMember) {
+  Scratch s("gzip");
+  const std::string plain = journal_text(s);
+  const SweepConfig config = small_config();
+  SweepOptions options;
+  options.threads = 1;
+  options.runs_path = s.path("runs.jsonl.gz");
+  const SweepResults full = run_sweep(config, options);
+  const std::string packed = read_file(options.runs_path);
+  ASSERT_GE(packed.size(), 2U);
+  EXPECT_EQ(static_cast<unsigned char>(packed[0]), 0x1f);
+  EXPECT_EQ(static_cast<unsigned char>(packed[1]), 0x8b);
+  EXPECT_LT(packed.size(), plain.size());
+  // The same lines but for the runs' times.
+  const auto untimed = [](const std::string& lines) {
+    std::vector<json> out = journal_lines_of(lines);
+    for (json& r : out) {
+      r.erase("plan_time_ns");
+      r.erase("phases");
+    }
+    return out;
+  };
+  std::string text, line;
+  JournalLineReader reader(options.runs_path);
+  while (reader.next(line)) text += line + "\n";
+  EXPECT_EQ(untimed(text), untimed(plain));
+  EXPECT_FALSE(reader.torn());
+  EXPECT_EQ(reader.intact_bytes(), packed.size());
+  // Cut in the middle of a member: the whole members before it are read, the rest run again.
+  const std::string torn = s.path("torn.jsonl.gz");
+  write_file(torn, packed.substr(0, packed.size() * 2 / 3));
+  SweepResults restored = empty_results(config);
+  const JournalStats stats = restore_journal(torn, restored);
+  EXPECT_EQ(stats.torn_lines, 1);
+  EXPECT_GT(stats.records, 0);
+  EXPECT_LT(stats.records, 12);
+  SweepOptions resume;
+  resume.threads = 2;
+  resume.resume_path = torn;
+  const SweepResults resumed = run_sweep(config, resume);
+  EXPECT_EQ(resumed.restored_runs, stats.records);
+  EXPECT_EQ(deterministic_part(build_report(config, resumed)),
+            deterministic_part(build_report(config, full)));
+  JournalLineReader after(torn);
+  std::int64_t runs = 0;
+  while (after.next(line)) runs += line.find("\"planner\"") != std::string::npos ? 1 : 0;
+  EXPECT_FALSE(after.torn()) << "the torn member is cut before the resume appends";
+  EXPECT_EQ(runs, 12);
+  // Bytes that are not gzip inside the chain are damage, not a torn tail.
+  const std::string damaged = s.path("damaged.jsonl.gz");
+  write_file(damaged, packed.substr(0, 40) + std::string(64, 'x') + packed.substr(40));
+  SweepResults none = empty_results(config);
+  const std::string why = input_error([&] { restore_journal(damaged, none); });
+  EXPECT_NE(why.find("damaged gzip data"), std::string::npos) << why;
+  EXPECT_NE(why.find(damaged), std::string::npos) << why;
 }
 
 TEST(JournalFormat, AVersion1JournalIsReadAndResumedWithAVersion2Segment) {

@@ -14,6 +14,7 @@
 #include "engine/output_paths.h"
 #include "engine/report.h"
 #include "engine/results_db.h"
+#include "engine/sweep_size.h"
 
 namespace agv {
 
@@ -29,6 +30,7 @@ struct ExportCommand {
 int command_export(const ExportCommand& cmd) {
   const std::string located = locate_config(cmd.config);
   const SweepConfig config = load_config(located);
+  check_sweep_size(config, true);  // export restores every run's slot
   std::vector<InputPath> inputs = files_read(config, located);
   for (const auto& j : cmd.journals) inputs.push_back({"journal", j});
   check_paths(inputs, {{"--sqlite", cmd.sqlite, OutputKind::database}});

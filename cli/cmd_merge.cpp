@@ -11,6 +11,7 @@
 #include "engine/journal.h"
 #include "engine/output_paths.h"
 #include "engine/report.h"
+#include "engine/sweep_size.h"
 
 namespace agv {
 
@@ -20,6 +21,7 @@ int command_merge(const std::string& config_path, const std::vector<std::string>
                   const std::string& out) {
   const std::string located = locate_config(config_path);
   const SweepConfig config = load_config(located);
+  check_sweep_size(config, true);  // merge restores every run's slot
   const std::string path = out.empty() ? config.report_path : out;
   std::vector<InputPath> inputs = files_read(config, located);
   for (const auto& j : journals) inputs.push_back({"journal", j});

@@ -17,15 +17,16 @@
 #include "cli/progress_sink.h"
 #include "cli/run_count.h"
 #include "engine/config_loader.h"
+#include "engine/database_sink.h"
 #include "engine/environment.h"
 #include "engine/files_read.h"
 #include "engine/journal.h"
 #include "engine/output_paths.h"
-#include "engine/database_sink.h"
 #include "engine/report.h"
 #include "engine/report_sink.h"
 #include "engine/results_db.h"
 #include "engine/sweep_runner.h"
+#include "engine/sweep_size.h"
 
 namespace agv {
 
@@ -99,7 +100,10 @@ void check_run_paths(const RunCommand& cmd, const std::string& config_path,
               {{cmd.out.empty() ? "report" : "--out", config.report_path},
                journal,
                {"--db", cmd.db, OutputKind::database}});
-  if (!cmd.db.empty()) check_results_db(cmd.db, "--db");
+  if (!cmd.db.empty()) {
+    check_results_db(cmd.db, "--db");
+    check_sweep_size(config, true);  // --db keeps every run's slot to the end
+  }
   ignore_file_size_signal();
 }
 
@@ -146,7 +150,7 @@ SweepOptions run_options(const RunCommand& cmd, const std::string& config_path,
 }
 
 int sink_failed(const SweepConfig& config, const SweepResults& results,
-                   const SweepOptions& options) {
+                const SweepOptions& options) {
   // The runs the journal lost are not in the report either: a resume runs them again.
   const Coverage coverage = coverage_of(results);
   std::fprintf(stderr,

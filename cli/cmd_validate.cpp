@@ -22,8 +22,10 @@ int command_validate(const std::string& config_path) {
       files_read(config, config_path),
       {{"report", config.report_path}, {"runs", config.runs_path, OutputKind::new_journal}});
   const SweepPlan plan = plan_sweep(config);
-  std::printf("%s: ok: %s, about %s held in memory\n", config_path.c_str(),
-              run_count_text(config, plan).c_str(), bytes_text(sweep_size(config).bytes).c_str());
+  const SweepSize size = sweep_size(config);
+  std::printf("%s: ok: %s, about %s held in memory (%s with --db, merge or export)\n",
+              config_path.c_str(), run_count_text(config, plan).c_str(),
+              bytes_text(size.bytes).c_str(), bytes_text(size.bytes_kept).c_str());
   return 0;
 }
 

@@ -421,8 +421,8 @@ SweepConfig parse_config(const json& j, const std::string& base_dir) {
   }
   if (!c.planners[baseline_index(c)].only.everywhere())
     throw InputError("baseline: \"" + c.baseline +
-                       "\" has an \"only\" scope; the baseline runs on every map so that every "
-                       "planner can be paired with it");
+                     "\" has an \"only\" scope; the baseline runs on every map so that every "
+                     "planner can be paired with it");
   c.time_limit_s = r.number("time_limit_s", c.time_limit_s, kTimeLimitRange);
   {
     ObjectReader m(optional_object(r, "motion"), "motion.");

@@ -31,7 +31,8 @@ GzipMemberWriter::GzipMemberWriter() : stream_(std::make_unique<z_stream>()) {
 GzipMemberWriter::~GzipMemberWriter() { deflateEnd(stream_.get()); }
 
 std::string GzipMemberWriter::member(std::string_view text) {
-  if (deflateReset(stream_.get()) != Z_OK) throw std::runtime_error("zlib: cannot reset its stream");
+  if (deflateReset(stream_.get()) != Z_OK)
+    throw std::runtime_error("zlib: cannot reset its stream");
   std::string out(deflateBound(stream_.get(), static_cast<uLong>(text.size())), '\0');
   stream_->next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
   stream_->avail_in = static_cast<uInt>(text.size());

@@ -51,9 +51,9 @@ class GzipMemberReader {
 
  private:
   std::unique_ptr<z_stream_s> stream_;
-  std::string member_text_;           // the current member's text so far
-  std::uintmax_t whole_bytes_ = 0;    // of the file, through the last whole member
-  std::uintmax_t member_bytes_ = 0;   // of the file, in the current member
+  std::string member_text_;          // the current member's text so far
+  std::uintmax_t whole_bytes_ = 0;   // of the file, through the last whole member
+  std::uintmax_t member_bytes_ = 0;  // of the file, in the current member
   bool failed_ = false;
 };
 

@@ -210,11 +210,12 @@ std::string WorkerProcess::describe_exit(bool& interrupted, std::int64_t& cpu_ns
   rusage usage{};
   while ((r = ::wait4(pid_, &status, 0, &usage)) < 0 && errno == EINTR) {
   }
-  cpu_ns = r > 0 ? (static_cast<std::int64_t>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) *
-                        1'000'000 +
-                    usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) *
-                       1000
-                 : -1;
+  cpu_ns =
+      r > 0
+          ? (static_cast<std::int64_t>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) * 1'000'000 +
+             usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) *
+                1000
+          : -1;
   ::kill(-pid_, SIGKILL);  // what its planner started, if anything is left of its group
   pid_ = -1;
   interrupted = false;
@@ -336,9 +337,9 @@ std::string worker_reply(const MapTaskRun& run) {
   const SweepCell& cell = run.context.plan.cell_of(run.task);
   const int map_index = run.context.plan.map_index_of(run.task);
   const MapFacts facts = run.facts();
-  return map_record(cell, map_index, facts) +
-         run_record(cell, map_index, run.planner, run_slot_of(run.output), run.output.message,
-                    facts);
+  return map_record(cell, map_index, facts) + run_record(cell, map_index, run.planner,
+                                                         run_slot_of(run.output),
+                                                         run.output.message, facts);
 }
 
 // The task loop: each request's runs sent back as they finish; 2 on a malformed request.

@@ -10,9 +10,9 @@
 // map tasks, {"task": t, "planners": [p, ...]}, and the worker runs them with the in-process
 // runner's own run_map_task (engine/map_task.h), answering as soon as each run is done with the
 // two journal lines of it, its map record and its run record (engine/run_record.h): the channel
-// speaks the journal's format, decoded by the journal's one decoder. The parent gives every run its own hard
-// limit; after a fault it starts a fresh worker on the task's remaining planners. Workers are
-// started with posix_spawn, which is safe from a multi-threaded parent (no fork of a process
+// speaks the journal's format, decoded by the journal's one decoder. The parent gives every run its
+// own hard limit; after a fault it starts a fresh worker on the task's remaining planners. Workers
+// are started with posix_spawn, which is safe from a multi-threaded parent (no fork of a process
 // holding other threads' locks).
 //
 // Interruption (README "Long sweeps", Interruption): each worker runs in a process group of

@@ -69,7 +69,7 @@ class JournalWriter {
   std::mutex mutex_;
   std::chrono::steady_clock::time_point last_sync_{};
   bool unsynced_ = false;
-  std::string failure_;  // the first failure, repeated by later writes
+  std::string failure_;                     // the first failure, repeated by later writes
   std::unique_ptr<GzipMemberWriter> gzip_;  // a gzip journal: a member per write
 };
 

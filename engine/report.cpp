@@ -223,17 +223,13 @@ json cell_report_json(const SweepConfig& config, const SweepResults& r, const Sw
   json planners = json::array();
   // A planner scoped out of this cell has no entry in it (rather than one with no runs).
   for (std::size_t p = 0; p < r.labels.size(); ++p)
-    if (r.maps_of(cell, p) > 0) planners.push_back(planner_cell_json(r, cell, p, config.planners[p]));
-  return {{"cell", cell.key},
-          {"generator", cell.generator},
-          {"width", cell.size.width},
-          {"height", cell.size.height},
-          {"density", cell.density},
-          {"maps", maps},
-          {"rejections", rejections},
-          {"obstacle_fraction", summary_json(summarize(fractions))},
-          {"planners", planners},
-          {"paired", paired_cell_json(config, r, cell)}};
+    if (r.maps_of(cell, p) > 0)
+      planners.push_back(planner_cell_json(r, cell, p, config.planners[p]));
+  return {{"cell", cell.key},         {"generator", cell.generator},
+          {"width", cell.size.width}, {"height", cell.size.height},
+          {"density", cell.density},  {"maps", maps},
+          {"rejections", rejections}, {"obstacle_fraction", summary_json(summarize(fractions))},
+          {"planners", planners},     {"paired", paired_cell_json(config, r, cell)}};
 }
 
 double mean_of(double sum, std::int64_t count) {
@@ -360,8 +356,10 @@ std::string report_text(const SweepConfig& config, const SweepResults& r) {
       if (c == '\n') text += "  ";
     }
   }
-  if (!r.plan.cells.empty()) text += "\n ]";
-  else text += "]";
+  if (!r.plan.cells.empty())
+    text += "\n ]";
+  else
+    text += "]";
   text.append(frame, empty.size(), std::string::npos);
   text += "\n";
   return text;
@@ -416,12 +414,12 @@ std::string summary_table(const SweepConfig& config, const SweepResults& r) {
         compare(t.length, t.baseline_length, *find_metric_spec("path_length"));
     char ci[64];
     std::snprintf(ci, sizeof ci, "[%.3f,%.3f]", c.geo_mean_ci95.lo, c.geo_mean_ci95.hi);
-    std::snprintf(line, sizeof line, "%-24s %8lld %7.1f%% %10.4f %12s %8.2f %12.0f %10.1f\n",
-                  r.labels[p].c_str(), static_cast<long long>(t.runs),
-                  t.runs ? 100.0 * static_cast<double>(t.successes) / static_cast<double>(t.runs)
-                         : 0.0,
-                  c.geo_mean_ratio, p == base ? "(baseline)" : ci, mean_of(t.turns_sum, t.successes),
-                  mean_of(t.checks_sum, t.successes), summarize(t.plan_time_us).median);
+    std::snprintf(
+        line, sizeof line, "%-24s %8lld %7.1f%% %10.4f %12s %8.2f %12.0f %10.1f\n",
+        r.labels[p].c_str(), static_cast<long long>(t.runs),
+        t.runs ? 100.0 * static_cast<double>(t.successes) / static_cast<double>(t.runs) : 0.0,
+        c.geo_mean_ratio, p == base ? "(baseline)" : ci, mean_of(t.turns_sum, t.successes),
+        mean_of(t.checks_sum, t.successes), summarize(t.plan_time_us).median);
     out << line;
   }
   return out.str();

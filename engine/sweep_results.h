@@ -150,7 +150,9 @@ struct SweepResults {
   std::vector<std::size_t> pending_planners(std::int64_t task) const;
 
  private:
-  CellResults& cells_of(const SweepCell& cell) { return cells[static_cast<std::size_t>(cell.index)]; }
+  CellResults& cells_of(const SweepCell& cell) {
+    return cells[static_cast<std::size_t>(cell.index)];
+  }
   const CellResults& cells_of(const SweepCell& cell) const {
     return cells[static_cast<std::size_t>(cell.index)];
   }

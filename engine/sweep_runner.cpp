@@ -142,9 +142,10 @@ std::string lost_run_message(const WorkerProcess::Reply& reply) {
   return reply.message + clocks;
 }
 
-// Runs the task's pending planners in this thread's worker process. A run the worker does not answer (it hung, died or sent garbage) is recorded here with
-// its outcome, and a fresh worker takes the task's remaining planners. A run an interruption cut
-// short is not recorded: the task's remaining planners stay pending for a resume.
+// Runs the task's pending planners in this thread's worker process. A run the worker does not
+// answer (it hung, died or sent garbage) is recorded here with its outcome, and a fresh worker
+// takes the task's remaining planners. A run an interruption cut short is not recorded: the task's
+// remaining planners stay pending for a resume.
 TaskDone run_task_isolated(SweepState& s, WorkerProcess& process, double hard_limit_s,
                            std::int64_t task, const std::vector<std::size_t>& planners) {
   TaskDone done;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "core/input_error.h"
 #include "engine/sweep_results.h"
@@ -27,6 +28,11 @@ constexpr double kRunHeapBytes = 320.0;
 constexpr double kCellBytes = sizeof(SweepCell) + 256.0;
 // A map task's MapSlot and its entry in the to-do list.
 constexpr double kMapTaskBytes = sizeof(MapSlot) + sizeof(std::int64_t);
+// What a released cell keeps of each run to the end (engine/report.h digest_cell): the summary
+// tallies (planning time; the path lengths paired with the baseline's) and its share of the
+// report entry. Measured (perf/README.md "Ten million runs"): 57 bytes a run at the peak of a
+// 10,000,000-run sweep, map slots included; rounded up.
+constexpr double kReleasedRunBytes = 64.0;
 // Above this share of the memory the sweep is refused: the rest is for the maps, the planners'
 // scratch, the report being built and whatever else the machine runs.
 constexpr double kMemoryShare = 0.5;
@@ -38,6 +44,7 @@ SweepSize sweep_size(const SweepConfig& config) {
   // Map sources: a cell per file, a map per query (scen) or maps_per_cell; counted apart, and
   // every planner counted on all of their maps (an upper bound under "only" scopes).
   double generated = 0.0, file_cells = 0.0, file_maps = 0.0;
+  double largest_cell = config.maps_per_cell;  // maps
   for (const auto& g : config.generators) {
     if (!g.files) {
       ++generated;
@@ -45,8 +52,11 @@ SweepSize sweep_size(const SweepConfig& config) {
     }
     for (const auto& f : g.files->files) {
       ++file_cells;
-      file_maps += g.files->queries == QuerySource::scen ? static_cast<double>(f.queries.size())
-                                                         : config.maps_per_cell;
+      const double maps = g.files->queries == QuerySource::scen
+                              ? static_cast<double>(f.queries.size())
+                              : config.maps_per_cell;
+      file_maps += maps;
+      largest_cell = std::max(largest_cell, maps);
     }
   }
   size.cells = generated * static_cast<double>(config.sizes.size()) *
@@ -67,9 +77,18 @@ SweepSize sweep_size(const SweepConfig& config) {
                            listed(p.only.sizes, config.sizes.size()) *
                            listed(p.only.densities, config.densities.size()) * maps;
   }
-  size.bytes = size.cells * kCellBytes + size.map_tasks * kMapTaskBytes +
-               size.run_slots * static_cast<double>(sizeof(RunSlot)) +
-               size.scheduled_runs * kRunHeapBytes;
+  const double per_map = size.cells * kCellBytes + size.map_tasks * kMapTaskBytes;
+  const double slot_bytes = static_cast<double>(sizeof(RunSlot));
+  size.bytes_kept = per_map + size.run_slots * slot_bytes + size.scheduled_runs * kRunHeapBytes;
+  // Released cells: the slots of the cells in flight (one a thread and one more finishing), the
+  // largest cell's each, and what every released cell keeps of its runs.
+  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
+  const double threads = config.threads > 0 ? config.threads : hardware;
+  const double in_flight = std::min(size.cells, threads + 1.0);
+  const double planners = static_cast<double>(config.planners.size());
+  size.bytes = per_map + in_flight * largest_cell * planners * (slot_bytes + kRunHeapBytes) +
+               size.scheduled_runs * kReleasedRunBytes;
+  size.bytes = std::min(size.bytes, size.bytes_kept);
   return size;
 }
 
@@ -120,17 +139,19 @@ std::string bytes_text(double bytes) {
   return buf;
 }
 
-void check_sweep_size(const SweepConfig& config) {
+void check_sweep_size(const SweepConfig& config, bool every_slot_kept) {
   const SweepSize size = sweep_size(config);
+  const double bytes = every_slot_kept ? size.bytes_kept : size.bytes;
   const UsableMemory memory = usable_memory();
-  if (memory.bytes <= 0.0 || size.bytes <= kMemoryShare * memory.bytes) return;
+  if (memory.bytes <= 0.0 || bytes <= kMemoryShare * memory.bytes) return;
   char counts[160];
   std::snprintf(counts, sizeof counts,
                 " maps in each of %.0f cells for %zu planners make %.4g run slots, about ",
                 size.cells, config.planners.size(), size.run_slots);
   throw InputError("maps_per_cell: " + std::to_string(config.maps_per_cell) + counts +
-                   bytes_text(size.bytes) + " held while the sweep runs; " + memory.source + " " +
-                   bytes_text(memory.bytes) +
+                   bytes_text(bytes) + " held while the sweep runs" +
+                   (every_slot_kept ? " (every run's slot kept to the end)" : "") + "; " +
+                   memory.source + " " + bytes_text(memory.bytes) +
                    " and a sweep may use half of it: lower maps_per_cell (or "
                    "the number of sizes, densities, generators or planners)");
 }

@@ -97,6 +97,21 @@ TEST(ConfigValidation, SweepTooLargeForMemoryIsRefused) {
         json big = kSmall;
         big["maps_per_cell"] = 2000000;  // 2 million slots: about a gigabyte, past half of kRoom
         why = config_error(big);
+        // A million runs over 400 cells: what `run` holds, releasing finished cells, fits; every
+        // slot kept to the end (run --db, merge, export: about 500 MB) does not.
+        json many = kSmall;
+        many["densities"] = json::array();
+        for (int d = 1; d <= 200; ++d) many["densities"].push_back(d / 1000.0);
+        many["maps_per_cell"] = 2500;
+        EXPECT_EQ(config_error(many), "no error");
+        const SweepConfig many_config = parse_config(many);
+        std::string kept = "no error";
+        try {
+          check_sweep_size(many_config, true);
+        } catch (const InputError& refused) {
+          kept = refused.what();
+        }
+        EXPECT_NE(kept.find("(every run's slot kept to the end)"), std::string::npos) << kept;
       }
     }
     if (!m.source.empty()) {

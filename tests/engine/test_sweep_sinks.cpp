@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "core/json_text.h"
 #include "engine/config_loader.h"
 #include "engine/database_sink.h"
 #include "engine/report.h"
 #include "engine/report_sink.h"
 #include "engine/sweep_runner.h"
-#include "core/json_text.h"
 
 namespace agv {
 namespace sink_tests {  // a name of its own: test files share a unity build
@@ -43,14 +43,14 @@ class Scratch {
 // Two cells of four maps, A* on all of them and RRT (its iterations too few to succeed always,
 // so some runs fail with a message) on the first two maps of each.
 SweepConfig two_cells() {
-  return parse_config(
-      {{"sizes", {16}},
-       {"densities", {0.1, 0.2}},
-       {"maps_per_cell", 4},
-       {"planners",
-        {"astar", {{"name", "rrt"},
-          {"only", {{"maps_per_cell", 2}}},
-          {"params", {{"max_iterations", 10}}}}}}});
+  return parse_config({{"sizes", {16}},
+                       {"densities", {0.1, 0.2}},
+                       {"maps_per_cell", 4},
+                       {"planners",
+                        {"astar",
+                         {{"name", "rrt"},
+                          {"only", {{"maps_per_cell", 2}}},
+                          {"params", {{"max_iterations", 10}}}}}}});
 }
 
 // Records what it is handed and checks each call against what came before.

@@ -7,6 +7,7 @@
 #include "cli/command.h"
 #include "cli/locate_config.h"
 #include "engine/config_loader.h"
+#include "engine/file_writes.h"
 #include "engine/files_read.h"
 #include "engine/journal.h"
 #include "engine/output_paths.h"
@@ -28,9 +29,12 @@ int command_merge(const std::string& config_path, const std::vector<std::string>
   check_paths(inputs, {{out.empty() ? "report" : "--out", path}});
   ignore_file_size_signal();
   SweepResults results = empty_results(config);
-  for (const auto& j : journals) restore_journal(j, results);
+  // Each cell is released once its runs are all read, and the report written one cell at a
+  // time. A sharded sweep's cells complete only with the last shard's journal (shards split
+  // cells by map), so merging shards still holds nearly every slot at its peak.
+  for (const auto& j : journals) restore_journal(j, results, nullptr, &config);
   update_completeness(results);
-  write_json_atomic(build_report(config, results), path);
+  write_file_atomic(report_text(config, results), path);
   const Coverage coverage = coverage_of(results);
   std::printf("merged %zu journals: %lld of %lld runs present%s; report: %s\n", journals.size(),
               static_cast<long long>(coverage.runs_present),

@@ -15,6 +15,7 @@
 #include "core/text_file.h"
 #include "engine/file_writes.h"
 #include "engine/journal_lines.h"
+#include "engine/report.h"
 #include "engine/run_record.h"
 
 namespace agv {
@@ -113,11 +114,22 @@ bool RecordRestorer::restore(const DecodedRecord& rec, const std::string& where)
   if (!results_.scheduled(task, planner->second))
     throw InputError(where + ": planner \"" + planner->first +
                      "\" is not scheduled on this map (outside its \"only\" scope)");
-  if (results_.run(task, planner->second).done) return false;
+  if (results_.released(sweep_cell) || results_.run(task, planner->second).done) return false;
   results_.store(task, planner->second, rec.run, rec.map.slot);
   if (messages_ != nullptr && !rec.message.empty())
     messages_->emplace(std::make_pair(task, planner->second), rec.message);
+  if (release_config_ != nullptr && --missing_[static_cast<std::size_t>(sweep_cell.index)] == 0)
+    results_.release(sweep_cell, digest_cell(*release_config_, results_, sweep_cell));
   return true;
+}
+
+void RecordRestorer::release_complete_cells(const SweepConfig& config) {
+  release_config_ = &config;
+  missing_.assign(results_.plan.cells.size(), 0);
+  for (const auto& cell : results_.plan.cells) {
+    const Coverage c = cell_coverage_of(results_, cell);
+    missing_[static_cast<std::size_t>(cell.index)] = c.runs_expected - c.runs_present;
+  }
 }
 
 JournalStats for_each_journal_record(
@@ -191,9 +203,10 @@ void refuse_changed_map_files(const std::string& path, const SweepResults& resul
 
 }  // namespace
 
-JournalStats restore_journal(const std::string& path, SweepResults& results,
-                             RunMessages* messages) {
+JournalStats restore_journal(const std::string& path, SweepResults& results, RunMessages* messages,
+                             const SweepConfig* release) {
   RecordRestorer restorer(results, messages);
+  if (release != nullptr) restorer.release_complete_cells(*release);
   JournalStats restored;
   try {
     JournalStats stats =

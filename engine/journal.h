@@ -96,6 +96,10 @@ class RecordRestorer {
   // restored (a duplicate). Throws InputError naming `where` for a record of another config
   // (naming a changed map file where that is why) or of a cell, map or planner this sweep lacks.
   bool restore(const DecodedRecord& record, const std::string& where);
+  // From now on, each cell whose every scheduled run is restored is released (its digest kept,
+  // its run slots freed: engine/report.h digest_cell), so restoring a long sweep's journal holds
+  // only the cells it left unfinished. A record of a released cell is then a duplicate.
+  void release_complete_cells(const SweepConfig& config);
 
  private:
   std::string config_hash_;
@@ -103,6 +107,8 @@ class RecordRestorer {
   RunMessages* messages_;
   std::map<std::string, int> cell_index_;
   std::map<std::string, std::size_t> planner_index_;
+  const SweepConfig* release_config_ = nullptr;
+  std::vector<std::int64_t> missing_;  // by cell: scheduled runs not restored yet
 };
 
 // Calls `f(record, where)` for every record of the journal at `path` in order, `where` naming
@@ -114,10 +120,11 @@ JournalStats for_each_journal_record(
     const std::function<void(const DecodedRecord&, const std::string&)>& f);
 
 // Reads every record of `path` into `results` (empty_results of the config), and the failure
-// messages into `messages` when given. Throws InputError for what for_each_journal_record
-// refuses, a record of another config (hash mismatch; a changed map file is named) or one
-// naming a cell, map or planner this sweep lacks.
+// messages into `messages` when given; with `release`, the config, each cell completed is
+// released as it completes (RecordRestorer::release_complete_cells). Throws InputError for what
+// for_each_journal_record refuses, a record of another config (hash mismatch; a changed map file is
+// named) or one naming a cell, map or planner this sweep lacks.
 JournalStats restore_journal(const std::string& path, SweepResults& results,
-                             RunMessages* messages = nullptr);
+                             RunMessages* messages = nullptr, const SweepConfig* release = nullptr);
 
 }  // namespace agv

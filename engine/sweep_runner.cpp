@@ -375,7 +375,10 @@ void run_sweep(const SweepConfig& config, SweepResults& res, const SweepOptions&
   const std::string journal_path = journal_path_of(options);
   JournalStats restored;
   RunMessages restored_messages;
-  if (resume) restored = restore_journal(options.resume_path, res, &restored_messages);
+  // With release_cells, the cells the journal completes are released as they are read.
+  if (resume)
+    restored = restore_journal(options.resume_path, res, &restored_messages,
+                               options.release_cells ? &config : nullptr);
   res.restored_runs = restored.records;
   // The journal is the first sink: what the others are handed is on disk first.
   std::optional<JournalSink> journal;

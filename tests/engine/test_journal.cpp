@@ -25,6 +25,7 @@
 #include "engine/run_record.h"
 #include "engine/sweep_config.h"
 #include "engine/sweep_runner.h"
+#include "tests/engine/scratch_dir.h"
 
 namespace agv {
 namespace {
@@ -33,29 +34,11 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 // A scratch folder of its own per test, removed afterwards.
-class Scratch {
- public:
-  explicit Scratch(const std::string& name)
-      : dir_(fs::temp_directory_path() /
-             ("agv_journal_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  ~Scratch() { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
- private:
-  fs::path dir_;
+struct Scratch : test::ScratchDir {
+  explicit Scratch(const std::string& name) : ScratchDir("journal_" + name) {}
 };
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::read_file;
+using test::write_file;
 
 // The message of the InputError `f` throws, or "no error".
 template <class F>

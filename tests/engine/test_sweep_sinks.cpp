@@ -18,6 +18,7 @@
 #include "engine/report.h"
 #include "engine/report_sink.h"
 #include "engine/sweep_runner.h"
+#include "tests/engine/scratch_dir.h"
 
 namespace agv {
 namespace sink_tests {  // a name of its own: test files share a unity build
@@ -26,18 +27,8 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-class Scratch {
- public:
-  explicit Scratch(const std::string& name)
-      : dir_(fs::temp_directory_path() / ("agv_sinks_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  ~Scratch() { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
- private:
-  fs::path dir_;
+struct Scratch : test::ScratchDir {
+  explicit Scratch(const std::string& name) : ScratchDir("sinks_" + name) {}
 };
 
 // Two cells of four maps, A* on all of them and RRT (its iterations too few to succeed always,
@@ -221,11 +212,6 @@ TEST(SweepSinks, TheDatabaseHasEveryMessageAlsoAfterAResume) {
             failures);
 }
 
-std::string file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // Released cells (issue 46 stage 3a): each finished cell is summarised into its digest and its
 // run slots freed; the report, written one cell at a time, is byte for byte the document's text,
 // and its non-timing part is that of a sweep that kept every slot, on 1 and 2 threads.
@@ -250,7 +236,7 @@ TEST(ReleasedCells, TheReportIsTheSameAsWhenEverySlotIsKept) {
     const SweepResults r = run_sweep(config, options);
     for (const auto& cell : r.plan.cells) EXPECT_TRUE(r.released(cell)) << cell.key;
     EXPECT_THROW(static_cast<void>(r.run(0, 0)), std::logic_error);
-    const std::string written = file_text(dir.path("report.json"));
+    const std::string written = test::read_file(dir.path("report.json"));
     EXPECT_EQ(written, json_text(build_report(config, r), 1) + "\n");
     EXPECT_EQ(deterministic_part(json::parse(written)), kept_part) << threads << " threads";
     EXPECT_TRUE(r.complete);
@@ -288,7 +274,15 @@ TEST(ReleasedCells, AnInterruptedSweepResumesToTheSameReport) {
   resume.release_cells = true;
   const SweepResults r = run_sweep(config, resume);
   EXPECT_TRUE(r.complete);
+  // Cell 0, complete in the journal, was released as it was read; cell 1 once it was run.
+  for (const auto& cell : r.plan.cells) EXPECT_TRUE(r.released(cell)) << cell.key;
   EXPECT_EQ(deterministic_part(build_report(config, r)), whole);
+  // The journal restored alone (merge's way): every cell released, the same report.
+  SweepResults merged = empty_results(config);
+  restore_journal(dir.path("runs.jsonl"), merged, nullptr, &config);
+  update_completeness(merged);
+  for (const auto& cell : merged.plan.cells) EXPECT_TRUE(merged.released(cell)) << cell.key;
+  EXPECT_EQ(deterministic_part(json::parse(report_text(config, merged))), whole);
 }
 
 }  // namespace

@@ -102,6 +102,21 @@ class ProbeSink : public SweepSink {
   std::atomic<bool> busy_{false};
 };
 
+// The sweep on one thread, stopped as a first SIGINT would once `tasks` map tasks are done (the
+// probe, added to the options' sinks, sets the stop flag).
+SweepResults stopped_after(const SweepConfig& config, int tasks, SweepOptions options,
+                           ProbeSink& probe) {
+  std::atomic<bool> stop{false};
+  probe.stop = &stop;
+  probe.stop_after = tasks;
+  options.threads = 1;
+  options.stop = &stop;
+  options.sinks.push_back(&probe);
+  const SweepResults r = run_sweep(config, options);
+  probe.stop = nullptr;
+  return r;
+}
+
 std::int64_t count_rows(const std::string& db, const std::string& sql) {
   sqlite3* handle = nullptr;
   EXPECT_EQ(sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
@@ -156,15 +171,8 @@ TEST(SweepSinks, AFailingSinkStopsTheSweepWhichEndsIncompleteNamingIt) {
 
 TEST(SweepSinks, AnInterruptedSweepHandsOverNoCellItDidNotFinish) {
   const SweepConfig config = two_cells();
-  std::atomic<bool> stop{false};
   ProbeSink probe;
-  probe.stop = &stop;
-  probe.stop_after = 2;
-  SweepOptions options;
-  options.threads = 1;
-  options.stop = &stop;
-  options.sinks = {&probe};
-  const SweepResults r = run_sweep(config, options);
+  const SweepResults r = stopped_after(config, 2, {}, probe);
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(probe.tasks, 2);
   EXPECT_TRUE(probe.cells.empty());
@@ -187,16 +195,10 @@ TEST(SweepSinks, TheDatabaseHasEveryMessageAlsoAfterAResume) {
   }
   ASSERT_GT(failures, 0);
   // Half the sweep journaled, then resumed with the database.
-  std::atomic<bool> stop{false};
   ProbeSink stopper;
-  stopper.stop = &stop;
-  stopper.stop_after = 4;
   SweepOptions first;
-  first.threads = 1;
-  first.stop = &stop;
   first.runs_path = dir.path("runs.jsonl");
-  first.sinks = {&stopper};
-  ASSERT_TRUE(run_sweep(config, first).interrupted);
+  ASSERT_TRUE(stopped_after(config, 4, first, stopper).interrupted);
   ReportSink report(config, dir.path("report.json"), true);
   DatabaseSink database(config, dir.path("results.db"), "--db", report);
   SweepOptions resume;
@@ -254,17 +256,11 @@ TEST(ReleasedCells, AnInterruptedSweepResumesToTheSameReport) {
     SweepOptions options;
     whole = deterministic_part(build_report(config, run_sweep(config, options)));
   }
-  std::atomic<bool> stop{false};
   ProbeSink stopper;
-  stopper.stop = &stop;
-  stopper.stop_after = 5;  // cell 0 finished, cell 1 begun
   SweepOptions first;
-  first.threads = 1;
-  first.stop = &stop;
   first.release_cells = true;
   first.runs_path = dir.path("runs.jsonl");
-  first.sinks = {&stopper};
-  const SweepResults cut = run_sweep(config, first);
+  const SweepResults cut = stopped_after(config, 5, first, stopper);  // cell 0 done, 1 begun
   ASSERT_TRUE(cut.interrupted);
   EXPECT_TRUE(cut.released(cut.plan.cells[0]));
   EXPECT_FALSE(cut.released(cut.plan.cells[1]));

@@ -29,10 +29,9 @@ int command_merge(const std::string& config_path, const std::vector<std::string>
   check_paths(inputs, {{out.empty() ? "report" : "--out", path}});
   ignore_file_size_signal();
   SweepResults results = empty_results(config);
-  // Each cell is released once its runs are all read, and the report written one cell at a
-  // time. A sharded sweep's cells complete only with the last shard's journal (shards split
-  // cells by map), so merging shards still holds nearly every slot at its peak.
-  for (const auto& j : journals) restore_journal(j, results, nullptr, &config);
+  // The journals read in turn, each cell released once its runs are all read, and the report
+  // written one cell at a time.
+  restore_journals(journals, results, &config);
   update_completeness(results);
   write_file_atomic(report_text(config, results), path);
   const Coverage coverage = coverage_of(results);

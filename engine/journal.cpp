@@ -132,31 +132,37 @@ void RecordRestorer::release_complete_cells(const SweepConfig& config) {
   }
 }
 
-JournalStats for_each_journal_record(
-    const std::string& path,
-    const std::function<void(const DecodedRecord&, const std::string&)>& f) {
-  require_regular_file(path, "journal");
+JournalRecordReader::JournalRecordReader(const std::string& path)
+    : path_((require_regular_file(path, "journal"), path)), reader_(path) {}
+
+bool JournalRecordReader::next(DecodedRecord& record, std::string& where) {
+  std::string line;
+  while (reader_.next(line)) {
+    ++line_no_;
+    if (line.empty()) continue;
+    where = path_ + ":" + std::to_string(line_no_);
+    // Records are written whole, newline included: a complete line that does not parse is a
+    // damaged journal, not a kill's doing.
+    record = decoder_.decode_line(line, where);
+    stats_.has_header = record.kind == DecodedRecord::Kind::header ||
+                        (stats_.has_header && record.version != kJournalVersionV1);
+    return true;
+  }
   // A torn tail (a last line without its newline, a gzip member cut short) was cut by a kill
   // even when it parses. The writer cuts the journal back before it, so its runs must not count
   // as restored (they would then be missing from the journal): they are run again.
-  JournalLineReader reader(path);
-  JournalDecoder decoder;
-  JournalStats stats;
-  std::string line;
-  std::int64_t line_no = 0;
-  while (reader.next(line)) {
-    ++line_no;
-    if (line.empty()) continue;
-    const std::string where = path + ":" + std::to_string(line_no);
-    // Records are written whole, newline included: a complete line that does not parse is a
-    // damaged journal, not a kill's doing.
-    const DecodedRecord decoded = decoder.decode_line(line, where);
-    stats.has_header = decoded.kind == DecodedRecord::Kind::header ||
-                       (stats.has_header && decoded.version != kJournalVersionV1);
-    f(decoded, where);
-  }
-  if (reader.torn()) ++stats.torn_lines;
-  return stats;
+  if (reader_.torn()) stats_.torn_lines = 1;
+  return false;
+}
+
+JournalStats for_each_journal_record(
+    const std::string& path,
+    const std::function<void(const DecodedRecord&, const std::string&)>& f) {
+  JournalRecordReader reader(path);
+  DecodedRecord record;
+  std::string where;
+  while (reader.next(record, where)) f(record, where);
+  return reader.stats();
 }
 
 namespace {
@@ -226,6 +232,40 @@ JournalStats restore_journal(const std::string& path, SweepResults& results, Run
     if (std::string(e.what()).find("written by a different config") != std::string::npos)
       refuse_changed_map_files(path, results);
     throw;
+  }
+}
+
+void restore_journals(const std::vector<std::string>& paths, SweepResults& results,
+                      const SweepConfig* release) {
+  RecordRestorer restorer(results);
+  if (release != nullptr) restorer.release_complete_cells(*release);
+  std::vector<std::unique_ptr<JournalRecordReader>> readers;
+  for (const auto& path : paths) readers.push_back(std::make_unique<JournalRecordReader>(path));
+  // A block of records from each journal in turn: the journals of a sharded sweep advance
+  // through the cells together, so each cell completes, and is released, while the rest are
+  // still being read (one after the other, every cell would wait for the last shard).
+  constexpr int kBlock = 256;
+  DecodedRecord record;
+  std::string where;
+  for (std::size_t open = readers.size(); open > 0;) {
+    for (std::size_t i = 0; i < readers.size(); ++i) {
+      if (!readers[i]) continue;
+      try {
+        int n = 0;
+        while (n < kBlock && readers[i]->next(record, where)) {
+          restorer.restore(record, where);
+          ++n;
+        }
+        if (n < kBlock) {
+          readers[i].reset();
+          --open;
+        }
+      } catch (const InputError& e) {
+        if (std::string(e.what()).find("written by a different config") != std::string::npos)
+          refuse_changed_map_files(paths[i], results);
+        throw;
+      }
+    }
   }
 }
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "engine/gzip_members.h"
+#include "engine/journal_lines.h"
 #include "engine/run_record.h"
 #include "engine/sink_error.h"
 #include "engine/sweep_results.h"
@@ -111,6 +112,25 @@ class RecordRestorer {
   std::vector<std::int64_t> missing_;  // by cell: scheduled runs not restored yet
 };
 
+// A journal's records in order, decoded (engine/run_record.h), `where` naming file and line.
+class JournalRecordReader {
+ public:
+  // Throws InputError for a file that is not a regular file or cannot be read.
+  explicit JournalRecordReader(const std::string& path);
+  // The next record; false at the end. Throws InputError for a malformed line other than a torn
+  // tail, or what the decoder refuses.
+  bool next(DecodedRecord& record, std::string& where);
+  // torn_lines (once next() returned false) and has_header; records and duplicates stay 0.
+  const JournalStats& stats() const { return stats_; }
+
+ private:
+  std::string path_;
+  JournalLineReader reader_;
+  JournalDecoder decoder_;
+  JournalStats stats_;
+  std::int64_t line_no_ = 0;
+};
+
 // Calls `f(record, where)` for every record of the journal at `path` in order, `where` naming
 // file and line. A torn last line (a record a kill cut short, even when it parses) is skipped and
 // counted in the returned torn_lines (records stays 0). Throws InputError for an unreadable file,
@@ -126,5 +146,11 @@ JournalStats for_each_journal_record(
 // named) or one naming a cell, map or planner this sweep lacks.
 JournalStats restore_journal(const std::string& path, SweepResults& results,
                              RunMessages* messages = nullptr, const SweepConfig* release = nullptr);
+
+// The same of several journals read in turn, a block of records from each (merge: the shards'
+// journals of one sweep advance through its cells together, so with `release` each cell is
+// released as soon as every shard's part of it is read).
+void restore_journals(const std::vector<std::string>& paths, SweepResults& results,
+                      const SweepConfig* release = nullptr);
 
 }  // namespace agv

@@ -281,6 +281,30 @@ TEST(ReleasedCells, AnInterruptedSweepResumesToTheSameReport) {
   EXPECT_EQ(deterministic_part(json::parse(report_text(config, merged))), whole);
 }
 
+// merge (issue 46 stage 3b): the shards' journals read in turn release every cell and give the
+// whole sweep's report.
+TEST(ReleasedCells, ShardJournalsMergeCellByCellToTheWholeReport) {
+  const SweepConfig config = two_cells();
+  Scratch dir("shards");
+  const json whole = deterministic_part(build_report(config, run_sweep(config, SweepOptions{})));
+  std::vector<std::string> journals;
+  for (int shard = 0; shard < 2; ++shard) {
+    SweepOptions options;
+    options.shard_index = shard;
+    options.shard_count = 2;
+    options.release_cells = true;
+    options.runs_path = dir.path("shard" + std::to_string(shard) + ".jsonl");
+    run_sweep(config, options);
+    journals.push_back(options.runs_path);
+  }
+  SweepResults merged = empty_results(config);
+  restore_journals(journals, merged, &config);
+  update_completeness(merged);
+  EXPECT_TRUE(merged.complete);
+  for (const auto& cell : merged.plan.cells) EXPECT_TRUE(merged.released(cell)) << cell.key;
+  EXPECT_EQ(deterministic_part(json::parse(report_text(config, merged))), whole);
+}
+
 }  // namespace
 }  // namespace sink_tests
 }  // namespace agv

@@ -84,8 +84,8 @@ struct PhaseTime {
 
 // What a planner that drives a simulated robot through a world with moving obstacles executed
 // (the DWA fusion planners, algos/local/fusion.h), for the engine to judge: collisions, reaching
-// the goal and the fusion metrics are decided from this record by engine/trajectory_judge.h, never
-// taken from the planner. Positions in continuous cell coordinates, times in seconds.
+// the goal and the fusion metrics are decided from this record by engine/judge/trajectory_judge.h,
+// never taken from the planner. Positions in continuous cell coordinates, times in seconds.
 struct DynamicTrack {
   double radius = 0.0;        // cells
   std::vector<Point> centre;  // at each Trajectory::t
@@ -142,7 +142,7 @@ struct PlanResult {
   // CPU time per phase; the engine reports these under `timing`.
   std::vector<PhaseTime> phases;
   // Set only by planners that simulate a robot (fusion planners): the engine then judges this
-  // trajectory instead of validating `path` against the grid (engine/run_executor.cpp).
+  // trajectory instead of validating `path` against the grid (engine/judge/run_executor.cpp).
   std::shared_ptr<const Trajectory> trajectory;
 
   static PlanResult failed(Failure why, std::string message) {

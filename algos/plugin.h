@@ -10,8 +10,8 @@
 //   }
 //
 // where add_planners(void* planners) appends to *static_cast<std::vector<agv::PlannerInfo>*>.
-// The engine (engine/plugins.h) reads the plain-C build record first and calls add_planners only
-// when it matches its own: the same plugin ABI, the same agvbench version (the headers that
+// The engine (engine/plan/plugins.h) reads the plain-C build record first and calls add_planners
+// only when it matches its own: the same plugin ABI, the same agvbench version (the headers that
 // define PlannerInfo, Planner and PlanRequest), the same compiler family and major version and
 // the same C++ standard library ABI, because C++ objects cross the boundary. The record is made
 // of macros, expanded in the plugin's own translation unit: an inline function would be taken

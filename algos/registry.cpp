@@ -102,7 +102,7 @@ std::deque<PlannerInfo>& test_planners() {
 void add_planner_for_testing(PlannerInfo info) { test_planners().push_back(std::move(info)); }
 
 namespace {
-// The plugins' planners (engine/plugins.h), added before any sweep starts; a deque keeps the
+// The plugins' planners (engine/plan/plugins.h), added before any sweep starts; a deque keeps the
 // returned pointers stable.
 std::deque<PlannerInfo>& plugin_planners() {
   static std::deque<PlannerInfo> planners;

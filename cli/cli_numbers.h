@@ -1,14 +1,14 @@
 #pragma once
 // Numbers on the command line, read strictly: the whole argument must be one base-10 number
 // (no trailing text, no sign where the range has none, no overflow, no nan or inf), inside the
-// range the config gives the same setting (engine/sweep_config.h kSeedRange and the others), so
-// `agvbench plan --seed -1` is refused exactly as `"seed": -1` is. Every numeric option of main
+// range the config gives the same setting (engine/plan/sweep_config.h kSeedRange and the others),
+// so `agvbench plan --seed -1` is refused exactly as `"seed": -1` is. Every numeric option of main
 // and every number inside an option's text (--shard i/N, --start x,y, --size WxH) goes through
 // these; failures are InputError naming the option.
 
 #include <string>
 
-#include "engine/sweep_config.h"
+#include "engine/plan/sweep_config.h"
 
 namespace agv {
 

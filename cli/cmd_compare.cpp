@@ -1,5 +1,5 @@
 // `agvbench compare BEFORE AFTER`: two reports of one config, result by result, and their
-// planning times with a test (engine/report_compare.h).
+// planning times with a test (engine/outputs/report_compare.h).
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -12,13 +12,13 @@
 #include "cli/report_file.h"
 #include "core/input_error.h"
 #include "core/json_text.h"
-#include "engine/report_compare.h"
+#include "engine/outputs/report_compare.h"
 
 namespace agv {
 
 namespace {
 
-// Two reports compared (engine/report_compare.h): exit 0 no difference, 1 a non-timing
+// Two reports compared (engine/outputs/report_compare.h): exit 0 no difference, 1 a non-timing
 // difference or a timing regression, 2 bad input (configs that differ beyond planner params).
 struct CompareCommand {
   std::string before;

@@ -1,5 +1,5 @@
-// `agvbench digest REPORT...`: each report's digest (engine/report_digest.h), one line each in
-// sha256sum's layout, so that two machines' or two builds' results are compared by one line.
+// `agvbench digest REPORT...`: each report's digest (engine/outputs/report_digest.h), one line each
+// in sha256sum's layout, so that two machines' or two builds' results are compared by one line.
 #include <iostream>
 #include <memory>
 #include <string>
@@ -7,7 +7,7 @@
 
 #include "cli/command.h"
 #include "cli/report_file.h"
-#include "engine/report_digest.h"
+#include "engine/outputs/report_digest.h"
 
 namespace agv {
 

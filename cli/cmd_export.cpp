@@ -7,20 +7,20 @@
 #include "cli/command.h"
 #include "cli/locate_config.h"
 #include "core/input_error.h"
-#include "engine/config_loader.h"
-#include "engine/environment.h"
-#include "engine/files_read.h"
-#include "engine/journal.h"
-#include "engine/output_paths.h"
-#include "engine/report.h"
-#include "engine/results_db.h"
-#include "engine/sweep_size.h"
+#include "engine/outputs/journal.h"
+#include "engine/outputs/report.h"
+#include "engine/outputs/results_db.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/files_read.h"
+#include "engine/plan/output_paths.h"
+#include "engine/plan/sweep_size.h"
+#include "engine/system/environment.h"
 
 namespace agv {
 
 namespace {
 
-// A sweep's journals as one experiment of an SQLite database (engine/results_db.h).
+// A sweep's journals as one experiment of an SQLite database (engine/outputs/results_db.h).
 struct ExportCommand {
   std::vector<std::string> journals;
   std::string config;

@@ -10,7 +10,7 @@
 #include "cli/command.h"
 #include "core/input_error.h"
 #include "core/json_text.h"
-#include "engine/plugins.h"
+#include "engine/plan/plugins.h"
 #include "generators/map_files.h"
 #include "generators/registry.h"
 

@@ -6,13 +6,13 @@
 
 #include "cli/command.h"
 #include "cli/locate_config.h"
-#include "engine/config_loader.h"
-#include "engine/file_writes.h"
-#include "engine/files_read.h"
-#include "engine/journal.h"
-#include "engine/output_paths.h"
-#include "engine/report.h"
-#include "engine/sweep_size.h"
+#include "engine/outputs/journal.h"
+#include "engine/outputs/report.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/files_read.h"
+#include "engine/plan/output_paths.h"
+#include "engine/plan/sweep_size.h"
+#include "engine/system/file_writes.h"
 
 namespace agv {
 

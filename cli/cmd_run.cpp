@@ -16,17 +16,17 @@
 #include "cli/option_checks.h"
 #include "cli/progress_sink.h"
 #include "cli/run_count.h"
-#include "engine/config_loader.h"
-#include "engine/database_sink.h"
-#include "engine/environment.h"
-#include "engine/files_read.h"
-#include "engine/journal.h"
-#include "engine/output_paths.h"
-#include "engine/report.h"
-#include "engine/report_sink.h"
-#include "engine/results_db.h"
-#include "engine/sweep_runner.h"
-#include "engine/sweep_size.h"
+#include "engine/outputs/database_sink.h"
+#include "engine/outputs/journal.h"
+#include "engine/outputs/report.h"
+#include "engine/outputs/report_sink.h"
+#include "engine/outputs/results_db.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/files_read.h"
+#include "engine/plan/output_paths.h"
+#include "engine/plan/sweep_size.h"
+#include "engine/sweep/sweep_runner.h"
+#include "engine/system/environment.h"
 
 namespace agv {
 
@@ -82,7 +82,8 @@ std::pair<int, int> parse_shard(const std::string& text) {
   return {static_cast<int>(i), static_cast<int>(n)};
 }
 
-// Every path `run` reads or writes, checked before anything is written (engine/output_paths.h).
+// Every path `run` reads or writes, checked before anything is written
+// (engine/plan/output_paths.h).
 void check_run_paths(const RunCommand& cmd, const std::string& config_path,
                      const SweepConfig& config, SweepOptions& options) {
   const bool resume = !options.resume_path.empty();
@@ -199,8 +200,8 @@ int command_run(const RunCommand& cmd) {
   SweepOptions options = run_options(cmd, config_path, config);
   install_stop_handlers();
   SweepResults results = empty_results(config);
-  // The sinks (engine/sweep_sink.h) after the journal: the report, then the database that reads
-  // it, then the progress display.
+  // The sinks (engine/outputs/sweep_sink.h) after the journal: the report, then the database that
+  // reads it, then the progress display.
   ReportSink report(config, config.report_path, !cmd.db.empty());
   std::optional<DatabaseSink> database;
   ProgressSink progress;

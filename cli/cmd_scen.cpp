@@ -14,9 +14,9 @@
 #include "cli/command.h"
 #include "cli/option_checks.h"
 #include "core/json_text.h"
-#include "engine/exit_guard.h"
-#include "engine/metrics.h"
-#include "engine/validator.h"
+#include "engine/judge/metrics.h"
+#include "engine/judge/validator.h"
+#include "engine/system/exit_guard.h"
 #include "generators/movingai.h"
 
 namespace agv {

@@ -5,11 +5,11 @@
 
 #include "cli/command.h"
 #include "cli/run_count.h"
-#include "engine/config_loader.h"
-#include "engine/files_read.h"
-#include "engine/output_paths.h"
-#include "engine/sweep_plan.h"
-#include "engine/sweep_size.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/files_read.h"
+#include "engine/plan/output_paths.h"
+#include "engine/plan/sweep_plan.h"
+#include "engine/plan/sweep_size.h"
 
 namespace agv {
 

@@ -1,9 +1,9 @@
-// `agvbench worker`: internal, one --isolate worker process (engine/isolated_worker.h).
+// `agvbench worker`: internal, one --isolate worker process (engine/sweep/isolated_worker.h).
 #include <memory>
 
 #include "cli/command.h"
 #include "cli/option_checks.h"
-#include "engine/isolated_worker.h"
+#include "engine/sweep/isolated_worker.h"
 
 namespace agv {
 

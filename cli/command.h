@@ -12,7 +12,8 @@ namespace agv {
 struct Command {
   CLI::App* sub = nullptr;
   std::function<int()> run;
-  bool takes_plugins = true;  // --plugin: planner plugins loaded before it runs (engine/plugins.h)
+  bool takes_plugins =
+      true;  // --plugin: planner plugins loaded before it runs (engine/plan/plugins.h)
 };
 
 Command add_run_command(CLI::App& app);       // cli/cmd_run.cpp

@@ -9,8 +9,8 @@
 #include "cli/command.h"
 #include "core/input_error.h"
 #include "core/printable.h"
-#include "engine/environment.h"
-#include "engine/plugins.h"
+#include "engine/plan/plugins.h"
+#include "engine/system/environment.h"
 
 namespace {
 
@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
       agv::add_validate_command(app), agv::add_list_command(app),   agv::add_export_command(app),
       agv::add_compare_command(app),  agv::add_digest_command(app), agv::add_plan_command(app),
       agv::add_scen_command(app)};
-  // Planner plugins (engine/plugins.h), loaded before the command runs.
+  // Planner plugins (engine/plan/plugins.h), loaded before the command runs.
   std::vector<std::string> plugins;
   for (const auto& c : commands)
     if (c.takes_plugins)

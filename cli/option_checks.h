@@ -5,7 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "engine/sweep_config.h"
+#include "engine/plan/sweep_config.h"
 
 namespace agv {
 

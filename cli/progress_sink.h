@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "cli/progress.h"
-#include "engine/sweep_sink.h"
+#include "engine/outputs/sweep_sink.h"
 
 namespace agv {
 

@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "engine/sweep_config.h"
-#include "engine/sweep_plan.h"
+#include "engine/plan/sweep_config.h"
+#include "engine/plan/sweep_plan.h"
 
 namespace agv {
 

@@ -5,7 +5,7 @@
 #   agvbench::core, agvbench::generators, agvbench::algos, agvbench::engine  the static libraries
 #       (PIC), for programs of one's own built on them;
 #   agvbench::plugin  headers and header-only dependencies only, for a planner plugin: its
-#       symbols come from the agvbench program that loads it (engine/plugins.h), so a plugin
+#       symbols come from the agvbench program that loads it (engine/plan/plugins.h), so a plugin
 #       shares the engine's one copy of everything (the thread-local collision-check counter
 #       among them) instead of linking a second.
 # Includes: P/include/agvbench is on the include path, so the repository's own spelling

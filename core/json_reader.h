@@ -1,7 +1,7 @@
 #pragma once
 // The one strict reader of JSON objects: every field read once, checked for type and range, and
 // any field nobody asked for refused, each failure an InputError naming the field. A config's
-// objects (engine/config_loader.cpp) and a map source's parameters (generators/map_files.cpp)
+// objects (engine/plan/config_loader.cpp) and a map source's parameters (generators/map_files.cpp)
 // are read with it.
 
 #include <nlohmann/json.hpp>

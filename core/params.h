@@ -39,10 +39,10 @@ struct ParamSpec {
   nlohmann::json to_json() const;
 };
 
-// Checks a set of declarations, as a plugin hands them over (engine/plugins.cpp): each name a word
-// of lower-case letters, digits and '_', no name twice, a known type, finite bounds with
-// min <= max (whole numbers for an integer), a non-empty choice list without repeats, and a
-// default that its own declaration accepts. Throws InputError naming `who` and the parameter.
+// Checks a set of declarations, as a plugin hands them over (engine/plan/plugins.cpp): each name a
+// word of lower-case letters, digits and '_', no name twice, a known type, finite bounds with min
+// <= max (whole numbers for an integer), a non-empty choice list without repeats, and a default
+// that its own declaration accepts. Throws InputError naming `who` and the parameter.
 void check_param_specs(const std::vector<ParamSpec>& specs, const std::string& who);
 
 // A validated parameter set: every declared name present, each value of its type and in range.

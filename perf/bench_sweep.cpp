@@ -5,9 +5,9 @@
 #include <fstream>
 #include <thread>
 
-#include "engine/config_loader.h"
-#include "engine/sweep_config.h"
-#include "engine/sweep_runner.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/sweep_config.h"
+#include "engine/sweep/sweep_runner.h"
 
 namespace {
 

@@ -99,7 +99,7 @@ for part in "${parts[@]}"; do
       # tests of each suite (Fusion.SameSeedSameTrajectory, ...). Also left out: the Python
       # report scripts and the HTML report in Chromium (plot_scripts, html_report: no C++ of ours
       # runs there), and cli_plugin, which installs the package and builds the example plugin
-      # against it (minutes of cmake and compiling): plugin loading (engine/plugins.cpp) is then
+      # against it (minutes of cmake and compiling): plugin loading (engine/plan/plugins.cpp) is then
       # tested in the plain suite only. And the planner contract of OMPL's four optimising
       # planners (10 s each in Release, mostly inside OMPL's own, uninstrumented library): the
       # adapter runs under ASan through the contract of ompl_rrt, ompl_rrtconnect, ompl_prm and

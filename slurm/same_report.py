@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Compares the deterministic parts of two agvbench reports: each report with every `timing`
-and `environment` key removed at any depth (as engine/report.h's deterministic_part does).
+and `environment` key removed at any depth (as engine/outputs/report.h's deterministic_part does).
 Exit 0 when they are equal, 1 with the first difference otherwise.
 Usage: same_report.py A.json B.json"""
 import json

@@ -4,8 +4,8 @@
 // planner did not see) and moving obstacles (discs at constant speed, reflecting off the walls
 // and off static and unknown cells). The world does not react to the robot, and the planner
 // only ever sees it through DwaView (algos/local/dwa.h). Whether the robot collided is decided by
-// the engine from the recorded trajectory (engine/trajectory_judge.h); contact() here only lets the
-// simulation stop at the first touch instead of driving on through an obstacle.
+// the engine from the recorded trajectory (engine/judge/trajectory_judge.h); contact() here only
+// lets the simulation stop at the first touch instead of driving on through an obstacle.
 //
 // Generation is deterministic from the Rng handed in. The fusion planners seed it from the map
 // (its cells, start and goal) and the world_seed parameter, not from the planner's label, so

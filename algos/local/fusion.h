@@ -12,8 +12,8 @@
 // curve fitting, the planner then running with `smoothing: none`; (3) the robot drives through them
 // (algos/local/fusion_drive.h, which lists our additions to the papers' loop). The planner reports
 // the executed trajectory, the moving obstacles' tracks and the unknown cells
-// (PlanResult::trajectory) and the engine judges it (engine/trajectory_judge.h). `path` is the
-// executed positions, so the path metrics apply.
+// (PlanResult::trajectory) and the engine judges it (engine/judge/trajectory_judge.h). `path` is
+// the executed positions, so the path metrics apply.
 //
 // Pure DWA (`dwa`): the same world and loop with start and goal as the only key points,
 // Fox's heading toward the goal, no turn speed limit.

@@ -10,11 +10,11 @@ from agvreports.cells import cell_key
 from agvreports.numeric import finite
 from agvreports.report_io import ReportError
 
-JOURNAL_VERSION = 2  # engine/run_record.h kJournalVersion
+JOURNAL_VERSION = 2  # engine/outputs/run_record.h kJournalVersion
 JOURNAL_VERSIONS_READ = (1, 2)  # version 1 journals are still read
 
 # The engine's run metrics, in the order a version 2 header must start its metric list with
-# (engine/run_metrics.h kRunMetricNames): the derived ones are rebuilt by position.
+# (engine/judge/run_metrics.h kRunMetricNames): the derived ones are rebuilt by position.
 RUN_METRICS = ("path_length", "path_length_m", "waypoints", "turns", "turn_angle_rad",
                "max_turn_rad", "smoothness_mean", "smoothness_max", "min_clearance",
                "min_clearance_m", "motion_time_s", "optimality_ratio", "any_angle_ratio",
@@ -47,7 +47,7 @@ def _refuse_version(r, n):
 
 
 def _ratio(length, reference):
-    """engine/run_executor.cpp set_ratio: length / reference, 1 for a zero reference."""
+    """engine/judge/run_executor.cpp set_ratio: length / reference, 1 for a zero reference."""
     if length is None or reference is None:
         return None
     if reference > 0:
@@ -57,7 +57,7 @@ def _ratio(length, reference):
 
 def rebuild_derived(m, explicit, facts, cell_edge):
     """Sets the derived metrics of `m` (name -> float) that `explicit` does not name, exactly as
-    engine/run_record.cpp rebuild_derived_metrics does (the same operations in the same order,
+    engine/outputs/run_record.cpp rebuild_derived_metrics does (the same operations in the same order,
     so the same doubles). Absent where their inputs are."""
     def put(name, v):
         if name not in explicit:
@@ -132,7 +132,7 @@ class _Segment:
 
 def _gzip_members(f):
     """The text of each whole member of a gzip journal (one per engine write: whole lines,
-    engine/gzip_members.h), in order; a member cut short at the end (a kill's) is left out."""
+    engine/outputs/gzip_members.h), in order; a member cut short at the end (a kill's) is left out."""
     member, d = [], zlib.decompressobj(wbits=31)
     while chunk := f.read(1 << 16):
         while chunk:

@@ -20,7 +20,7 @@
 #include "algos/sampling/rrt_tree.h"
 #include "algos/search/dijkstra.h"
 #include "core/corner_rule.h"
-#include "engine/validator.h"
+#include "engine/judge/validator.h"
 #include "generators/map_generators.h"
 #include "tests/test_size.h"
 

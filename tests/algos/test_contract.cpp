@@ -31,7 +31,7 @@
 
 #include "algos/planner.h"
 #include "algos/registry.h"
-#include "engine/run_executor.h"
+#include "engine/judge/run_executor.h"
 #include "generators/map_generators.h"
 #include "tests/test_size.h"
 
@@ -556,7 +556,8 @@ TEST_P(PlannerContract, WaypointCountIsThatOfThePathReturned) {
 INSTANTIATE_TEST_SUITE_P(Registry, PlannerContract, testing::ValuesIn(registered()),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
-// What a plugin's planners must pass when it loads (engine/plugins.cpp): the built-ins pass it too.
+// What a plugin's planners must pass when it loads (engine/plan/plugins.cpp): the built-ins pass it
+// too.
 TEST(PlannerDeclarations, EveryBuiltInPassesThePluginCheck) {
   for (const PlannerInfo& info : planner_registry())
     EXPECT_NO_THROW(check_param_specs(info.params, info.name)) << info.name;

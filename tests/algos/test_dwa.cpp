@@ -35,9 +35,9 @@
 #include "core/cell_geometry.h"
 #include "core/distance_transform.h"
 #include "core/input_error.h"
-#include "engine/metrics.h"
-#include "engine/run_executor.h"
-#include "engine/trajectory_judge.h"
+#include "engine/judge/metrics.h"
+#include "engine/judge/run_executor.h"
+#include "engine/judge/trajectory_judge.h"
 #include "generators/map_generators.h"
 #include "tests/test_size.h"
 

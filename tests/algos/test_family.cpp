@@ -28,9 +28,9 @@
 #include "algos/search/search_core.h"
 #include "core/cell_geometry.h"
 #include "core/line_of_sight.h"
-#include "engine/metrics.h"
-#include "engine/sweep_plan.h"
-#include "engine/validator.h"
+#include "engine/judge/metrics.h"
+#include "engine/judge/validator.h"
+#include "engine/plan/sweep_plan.h"
 #include "generators/map_generators.h"
 #include "generators/registry.h"
 

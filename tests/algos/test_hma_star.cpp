@@ -16,9 +16,9 @@
 #include "algos/registry.h"
 #include "algos/swarm/hma_star.h"
 #include "core/line_of_sight.h"
-#include "engine/metrics.h"
-#include "engine/statistics.h"
-#include "engine/validator.h"
+#include "engine/judge/metrics.h"
+#include "engine/judge/statistics.h"
+#include "engine/judge/validator.h"
 #include "generators/map_generators.h"
 #include "tests/test_size.h"
 

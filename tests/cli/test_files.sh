@@ -98,7 +98,7 @@ refused "merge --out its config" '--out "c.json": is the config file' \
   "$bin" merge j.jsonl --config c.json --out c.json
 refused "plan --json-out the map" '--json-out "m.map": is the --map' \
   "$bin" plan --map m.map --start 0,0 --goal 3,3 --json-out m.map
-# Every file a config makes a command read (engine/files_read.h), however spelled: a map, its
+# Every file a config makes a command read (engine/plan/files_read.h), however spelled: a map, its
 # .scen, a YAML map and the image it names.
 mkdir maps
 tiny_map >maps/a.map

@@ -333,7 +333,7 @@ cat >bad/consumer.cpp <<'EOF_CPP'
 #include <cstdio>
 #include "agvbench/algos/planner.h"
 #include "agvbench/algos/registry.h"
-#include "agvbench/engine/config_loader.h"
+#include "agvbench/engine/plan/config_loader.h"
 int main() {
   agv::Grid grid(9, 9);
   for (int y = 0; y < 8; ++y) grid.set_blocked(4, y, true);

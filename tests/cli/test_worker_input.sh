@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The hidden `worker` subcommand (the --isolate worker process, engine/isolated_worker.h) checks
+# The hidden `worker` subcommand (the --isolate worker process, engine/sweep/isolated_worker.h) checks
 # what it reads (issue 15, class 9): a request naming a map task or a planner the sweep does not
 # have, or that is not a request at all, is refused with exit 2 and a message saying which,
 # never a crash; a good request still runs. Usage: test_worker_input.sh AGVBENCH

@@ -180,7 +180,7 @@ TEST(DistanceTransform, SegmentClearanceEqualsBruteForce) {
 }
 
 // With a bound: the same double below it, at least the bound otherwise, so a polyline's running
-// minimum is bit for bit the unbounded one (engine/metrics.cpp min_clearance).
+// minimum is bit for bit the unbounded one (engine/judge/metrics.cpp min_clearance).
 TEST(DistanceTransform, BoundedSegmentClearanceIsExactBelowTheBound) {
   Rng rng(8, 3);
   for (int trial = 0; trial < 40; ++trial) {

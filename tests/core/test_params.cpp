@@ -99,7 +99,7 @@ TEST(ParamDecls, ANameDeclaredTwiceIsABug) {
                std::logic_error);
 }
 
-// The declarations a plugin hands over are checked when it loads (engine/plugins.cpp): each
+// The declarations a plugin hands over are checked when it loads (engine/plan/plugins.cpp): each
 // malformed one is refused with its name and what is wrong; every built-in declaration passes.
 std::string refusal(std::vector<ParamSpec> specs) {
   try {

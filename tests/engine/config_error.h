@@ -5,8 +5,8 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "engine/config_loader.h"
-#include "engine/sweep_config.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/sweep_config.h"
 
 namespace agv {
 

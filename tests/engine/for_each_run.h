@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/map_task.h"
-#include "engine/sweep_config.h"
+#include "engine/plan/sweep_config.h"
+#include "engine/sweep/map_task.h"
 
 namespace agv {
 

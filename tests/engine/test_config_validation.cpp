@@ -10,11 +10,11 @@
 #include <string>
 
 #include "cli/cli_numbers.h"
-#include "engine/config_loader.h"
-#include "engine/sweep_config.h"
-#include "engine/sweep_plan.h"
-#include "engine/sweep_runner.h"
-#include "engine/sweep_size.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/sweep_config.h"
+#include "engine/plan/sweep_plan.h"
+#include "engine/plan/sweep_size.h"
+#include "engine/sweep/sweep_runner.h"
 #include "tests/address_space_limit.h"
 #include "tests/engine/config_error.h"
 #include "tests/test_size.h"

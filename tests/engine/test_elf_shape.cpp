@@ -1,4 +1,4 @@
-// A plugin file is checked before dlopen maps it (engine/elf_shape.h): a real shared library
+// A plugin file is checked before dlopen maps it (engine/system/elf_shape.h): a real shared library
 // passes; its truncated copies, which the loader would map past their end (SIGBUS), are refused.
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "engine/elf_shape.h"
+#include "engine/system/elf_shape.h"
 
 namespace agv {
 namespace {

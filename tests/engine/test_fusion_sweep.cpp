@@ -6,10 +6,10 @@
 
 #include <string>
 
-#include "engine/config_loader.h"
-#include "engine/report.h"
-#include "engine/sweep_config.h"
-#include "engine/sweep_runner.h"
+#include "engine/outputs/report.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/sweep_config.h"
+#include "engine/sweep/sweep_runner.h"
 
 namespace agv {
 namespace {

@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "algos/registry.h"
-#include "engine/config_loader.h"
-#include "engine/isolated_worker.h"
-#include "engine/report.h"
-#include "engine/sweep_runner.h"
+#include "engine/outputs/report.h"
+#include "engine/plan/config_loader.h"
+#include "engine/sweep/isolated_worker.h"
+#include "engine/sweep/sweep_runner.h"
 
 #if AGV_SANITIZED_BUILD  // tests/CMakeLists.txt: ASan, TSan or the fuzz tree, GCC or clang
 constexpr bool kSanitized = true;  // sanitizers reserve terabytes of address space: no RLIMIT_AS

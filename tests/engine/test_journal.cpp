@@ -17,14 +17,14 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "engine/config_loader.h"
-#include "engine/journal.h"
-#include "engine/journal_lines.h"
-#include "engine/output_paths.h"
-#include "engine/report.h"
-#include "engine/run_record.h"
-#include "engine/sweep_config.h"
-#include "engine/sweep_runner.h"
+#include "engine/outputs/journal.h"
+#include "engine/outputs/journal_lines.h"
+#include "engine/outputs/report.h"
+#include "engine/outputs/run_record.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/output_paths.h"
+#include "engine/plan/sweep_config.h"
+#include "engine/sweep/sweep_runner.h"
 #include "tests/engine/scratch_dir.h"
 
 namespace agv {

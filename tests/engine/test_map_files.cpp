@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "core/rng.h"
-#include "engine/config_loader.h"
-#include "engine/report.h"
-#include "engine/sweep_config.h"
-#include "engine/sweep_plan.h"
-#include "engine/sweep_runner.h"
+#include "engine/outputs/report.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/sweep_config.h"
+#include "engine/plan/sweep_plan.h"
+#include "engine/sweep/sweep_runner.h"
 #include "generators/movingai.h"
 #include "generators/occupancy_image.h"
 #include "tests/address_space_limit.h"

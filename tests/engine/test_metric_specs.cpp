@@ -1,6 +1,6 @@
-// Every metric the engine or a planner reports declares its direction (engine/metric_specs.h),
-// and the report's paired comparisons follow the declarations: wins in the declared direction,
-// only metrics both planners define, the timing over every run.
+// Every metric the engine or a planner reports declares its direction
+// (engine/judge/metric_specs.h), and the report's paired comparisons follow the declarations: wins
+// in the declared direction, only metrics both planners define, the timing over every run.
 
 #include <gtest/gtest.h>
 
@@ -10,12 +10,12 @@
 #include <string>
 
 #include "algos/registry.h"
-#include "engine/config_loader.h"
-#include "engine/metric_specs.h"
-#include "engine/report.h"
-#include "engine/run_executor.h"
-#include "engine/sweep_config.h"
-#include "engine/sweep_runner.h"
+#include "engine/judge/metric_specs.h"
+#include "engine/judge/run_executor.h"
+#include "engine/outputs/report.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/sweep_config.h"
+#include "engine/sweep/sweep_runner.h"
 #include "generators/map_generators.h"
 #include "tests/test_size.h"
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "algos/postprocess/path_curves.h"
-#include "engine/metrics.h"
+#include "engine/judge/metrics.h"
 
 namespace agv {
 namespace {

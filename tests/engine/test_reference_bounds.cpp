@@ -9,9 +9,9 @@
 #include <string>
 
 #include "algos/registry.h"
-#include "engine/config_loader.h"
-#include "engine/map_task.h"
-#include "engine/sweep_config.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/sweep_config.h"
+#include "engine/sweep/map_task.h"
 #include "tests/engine/for_each_run.h"
 
 namespace agv {

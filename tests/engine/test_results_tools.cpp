@@ -14,14 +14,14 @@
 
 #include "cli/progress.h"
 #include "core/input_error.h"
-#include "engine/config_loader.h"
-#include "engine/environment.h"
-#include "engine/report.h"
-#include "engine/report_compare.h"
-#include "engine/results_db.h"
-#include "engine/statistics.h"
-#include "engine/sweep_config.h"
-#include "engine/sweep_runner.h"
+#include "engine/judge/statistics.h"
+#include "engine/outputs/report.h"
+#include "engine/outputs/report_compare.h"
+#include "engine/outputs/results_db.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/sweep_config.h"
+#include "engine/sweep/sweep_runner.h"
+#include "engine/system/environment.h"
 
 namespace agv {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "engine/sha256.h"
+#include "engine/system/sha256.h"
 
 namespace agv {
 namespace {

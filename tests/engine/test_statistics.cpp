@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "engine/statistics.h"
+#include "engine/judge/statistics.h"
 
 namespace agv {
 namespace {

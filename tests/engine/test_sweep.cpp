@@ -7,11 +7,11 @@
 #include <set>
 #include <string>
 
-#include "engine/config_loader.h"
-#include "engine/report.h"
-#include "engine/sweep_config.h"
-#include "engine/sweep_plan.h"
-#include "engine/sweep_runner.h"
+#include "engine/outputs/report.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/sweep_config.h"
+#include "engine/plan/sweep_plan.h"
+#include "engine/sweep/sweep_runner.h"
 #include "generators/registry.h"
 #include "tests/engine/config_error.h"
 #include "tests/test_size.h"

@@ -1,5 +1,5 @@
-// The sweep's sinks (engine/sweep_sink.h): the calls in their order and one at a time, a cell
-// handed over once all its runs are in, a failing sink stopping the sweep with nothing lost
+// The sweep's sinks (engine/outputs/sweep_sink.h): the calls in their order and one at a time, a
+// cell handed over once all its runs are in, a failing sink stopping the sweep with nothing lost
 // unsaid, and the report and database sinks fed from the runs (issue 46, stage 2).
 #include <gtest/gtest.h>
 #include <sqlite3.h>
@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "core/json_text.h"
-#include "engine/config_loader.h"
-#include "engine/database_sink.h"
-#include "engine/report.h"
-#include "engine/report_sink.h"
-#include "engine/sweep_runner.h"
+#include "engine/outputs/database_sink.h"
+#include "engine/outputs/report.h"
+#include "engine/outputs/report_sink.h"
+#include "engine/plan/config_loader.h"
+#include "engine/sweep/sweep_runner.h"
 #include "tests/engine/scratch_dir.h"
 
 namespace agv {

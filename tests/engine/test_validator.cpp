@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/validator.h"
+#include "engine/judge/validator.h"
 
 namespace agv {
 namespace {

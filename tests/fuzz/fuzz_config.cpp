@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
-#include "engine/config_loader.h"
-#include "engine/sweep_config.h"
+#include "engine/plan/config_loader.h"
+#include "engine/plan/sweep_config.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto j = nlohmann::json::parse(data, data + size, nullptr, /*allow_exceptions=*/false);

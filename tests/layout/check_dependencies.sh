@@ -2,7 +2,9 @@
 # The dependency rule of docs/ARCHITECTURE.md, checked on the includes: core/ includes nothing of
 # ours; generators/ and algos/ stand on core/ only and never include each other (nor engine/);
 # nothing below the command line includes cli/ (a second front-end drives the engine without it);
-# at the top of algos/ sit only the planner interface, what a planner declares and the registry.
+# at the top of algos/ sit only the planner interface, what a planner declares and the registry;
+# engine/ is in rooms, each including only the rooms before it (docs/ARCHITECTURE.md "Engine
+# rooms"): system, judge, plan, outputs, sweep; no source lies outside a room.
 # Usage: check_dependencies.sh SOURCE_DIR
 set -uo pipefail
 cd "${1:?usage: $0 SOURCE_DIR}"
@@ -27,6 +29,25 @@ if [ "$top" = "planner.cpp planner_info.cpp registry.cpp " ]; then
   echo "ok   algos/ top level holds only the interface, the planner declaration and the registry"
 else
   echo "FAIL algos/ top level holds: $top(expected planner.cpp planner_info.cpp registry.cpp)"
+  fail=1
+fi
+rooms=(system judge plan outputs sweep)
+for i in "${!rooms[@]}"; do
+  later=$(IFS='|'; echo "${rooms[*]:i+1}")
+  if [ -n "$later" ]; then
+    forbid "engine/${rooms[$i]}" "engine/($later)" 'a room stands only on the rooms before it'
+  fi
+done
+loose=$(find engine -maxdepth 1 \( -name '*.h' -o -name '*.cpp' \) -printf '%f ' | sort)
+if [ -z "$loose" ]; then
+  echo "ok   engine/ top level holds no source; every unit is in a room"
+else
+  echo "FAIL engine/ top level holds sources outside the rooms: $loose"
+  fail=1
+fi
+unknown=$(find engine -mindepth 1 -maxdepth 1 -type d -printf '%f\n' | grep -vxE "$(IFS='|'; echo "${rooms[*]}")" || true)
+if [ -n "$unknown" ]; then
+  echo "FAIL engine/ has a folder that is not a room of the rule: $unknown"
   fail=1
 fi
 exit $fail

@@ -8,7 +8,7 @@ check_dependencies.sh; docs/ARCHITECTURE.md "Dependency rule"), checked on the t
 3. no function in engine/ or cli/ longer than MAX_FUNCTION_LINES lines, signature to closing
    brace;
 4. JSON is parsed only where JSON_PARSERS says, and a run record in one place per language:
-   engine/run_record.cpp (JournalDecoder::decode_line) and reports/agvreports/runs.py
+   engine/outputs/run_record.cpp (JournalDecoder::decode_line) and reports/agvreports/runs.py
    (journal_records); a new parser of records would be a second codec (issue 46, stage 1).
 
 Prints every violation, one per line, and exits 1 if there is any. Usage: check_layout.py ROOT"""
@@ -21,9 +21,9 @@ CYCLE_ROOMS = ("engine", "cli", "algos")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 # Where a file of the tree may parse JSON, and what it parses.
 JSON_PARSERS = {
-    "engine/run_record.cpp": "run records: journals and the isolated worker's channel",
-    "engine/config_loader.cpp": "sweep configs",
-    "engine/isolated_worker.cpp": "the worker channel's control lines (config, ready, requests)",
+    "engine/outputs/run_record.cpp": "run records: journals and the isolated worker's channel",
+    "engine/plan/config_loader.cpp": "sweep configs",
+    "engine/sweep/isolated_worker.cpp": "the worker channel's control lines (config, ready, requests)",
     "cli/cli_params.cpp": "--param values",
     "cli/report_file.cpp": "reports (compare, digest)",
     "reports/agvreports/runs.py": "run records: journal_records",
@@ -161,7 +161,7 @@ def main(root):
                 with open(os.path.join(root, path), encoding="utf-8", errors="replace") as f:
                     if JSON_PARSE.search(f.read()) and path not in JSON_PARSERS:
                         problems.append(f"{path} parses JSON: records are decoded by "
-                                        "engine/run_record.cpp or reports/agvreports/runs.py "
+                                        "engine/outputs/run_record.cpp or reports/agvreports/runs.py "
                                         "(add others to JSON_PARSERS with what they parse)")
     for p in problems:
         print(p)

@@ -4,7 +4,7 @@ scripts without the engine.
 
 Each planner gets a simple per-map model relative to the baseline (multiplicative factors with
 log-normal noise), runs are drawn from a seeded RNG, and the per-run records are aggregated the
-way engine/report.cpp does it (summaries over successful runs, Wilson intervals, paired
+way engine/outputs/report.cpp does it (summaries over successful runs, Wilson intervals, paired
 geometric-mean ratios with t intervals on the log ratios). So a test can set "HMA* is 12% shorter
 than A*" and check what the claims checker makes of it, and can also write the per-run JSON
 Lines file the report was built from.

@@ -25,14 +25,6 @@ constexpr std::uint64_t kAllBits = ~std::uint64_t{0};
 // on a grid we load (~1e-12), far below anything that matters. Candidates are only candidates:
 // each is then judged by the reference's exact squared distance.
 constexpr double kBandSlack = 1e-6;
-// Single segments: columns walked one at a time before the vectorised blocks start, and the
-// shortest block worth vectorising (perf/bench_los.cpp chose both).
-constexpr int kLead = 8;
-constexpr int kMinBlock = 16;
-constexpr double kSingleVectorFrom = 24.0;  // cells along the major axis
-// Batches: a segment this long (along its major axis) has more columns than the lanes take
-// (line_of_sight_lanes.cpp kMaxLaneColumns); a batch of such segments skips the lanes.
-constexpr double kLongForLanes = 18.0;
 
 // Any blocked cell among x0..x1 of grid row y (x0 <= x1 in [-1, W], y in [-1, H]): one masked
 // word, or a masked OR over the words of a long interval.
@@ -143,110 +135,95 @@ bool scalar_walk(const Grid& grid, const Lines& lines, int from, int to, CornerR
   return false;
 }
 
-// The middle columns m0..m1 (both lines strictly inside (ua, ub)), a block at a time and without
-// a branch per cell. In the mirrored frame h = s * v (s the slope's sign, so h rises; mirrored
-// index j is frame index j for s > 0 and -j - 1 = ~j for s < 0) the reference's column i covers
-// the cells floor(h(i)) .. ceil(h(i + 1)) - 1, h(X) being its snapped crossing of line X: the
-// strict bounds leave out the side cells of vertex passes, and there are at most 2 cells since
-// |slope| <= 1. Every line where h is an integer is a vertex pass whose side-cell pair the corner
-// rule judges. Each block first evaluates its lines (a loop the compiler vectorises: the same
-// IEEE operations lane by lane as the reference's scalar ones), then ORs the bits of every
-// covered cell (vectorised too, with gathers where the target has them). Blocks grow from
-// kMinBlock to kMaxBlock lines so that a blocked segment still stops early.
+// Screen, then walk. The walk's columns go in blocks; each block is first screened:
+// one masked word test per grid row over a box holding every cell the reference walk can touch
+// in those columns, and every vertex side cell it can judge there (the segment's extent over the
+// block, widened by kScreenSlack in both axes, far above any snapping or rounding). Only a block
+// whose box holds a blocked cell is walked exactly (scalar_walk: the reference's columns and
+// corner checks), with the column before it for the corner check at its left line. A column never
+// walked has every cell it touches and every side cell it judges in a free box, so the verdict
+// is the reference's; on free space a segment costs a few word tests per block of columns.
+constexpr double kScreenSlack = 1e-6;
+// Blocks grow from kFirstBlock columns by kGrowth to kMaxBlock: a blocked segment most often
+// stops in its first columns, where a large box would be screened in vain (perf/bench_los.cpp
+// chose all three; box_any takes boxes under 64 cells wide, a box is at most kMaxBlock + 3).
+constexpr int kFirstBlock = 2;
+constexpr int kGrowth = 4;
+constexpr int kMaxBlock = 32;
+
+// Any blocked cell in rows y0..y1 among columns x0..x1 (x1 - x0 < 64, so at most two words).
+inline bool box_any(const Grid& grid, int x0, int x1, int y0, int y1) {
+  const auto b0 = static_cast<unsigned>(x0 + 1);
+  const auto b1 = static_cast<unsigned>(x1 + 1);
+  const unsigned w0 = b0 >> 6;
+  const unsigned w1 = b1 >> 6;
+  std::uint64_t m0 = kAllBits << (b0 & 63U);
+  const std::uint64_t m1 = kAllBits >> (63U - (b1 & 63U));
+  if (w0 == w1) m0 &= m1;
+  const std::uint64_t m1_only = w0 == w1 ? 0 : m1;
+  std::uint64_t acc = 0;
+  for (int y = y0; y <= y1; ++y) {
+    const std::uint64_t* row = grid.bit_row(y);
+    acc |= (row[w0] & m0) | (row[w1] & m1_only);
+  }
+  return acc != 0;
+}
+
+// The cells lo .. hi along one axis holding the extent [lo, hi], widened, within [min, max].
+inline int first_cell(double lo, int min) {
+  return std::max(static_cast<int>(std::ceil(lo - kScreenSlack)) - 1, min);
+}
+inline int last_cell(double hi, int max) {
+  return std::min(static_cast<int>(std::floor(hi + kScreenSlack)), max);
+}
+
+// Whether the box of walk columns i0..i1 holds a blocked cell. Transposed, a walk column is a
+// grid row and the box spans the segment's v extent (grid x); else the box is those grid columns
+// over the rows of the v extent.
 template <bool kTransposed>
-class MiddleColumns {
- public:
-  MiddleColumns(const Grid& grid, const Lines& lines)
-      : bits_(grid.bit_row(-1)),
-        words_(static_cast<std::size_t>(grid.words_per_row())),
-        lines_(lines),
-        s_(lines.slope > 0.0 ? 1.0 : -1.0),
-        flip_(lines.slope > 0.0 ? 0 : -1) {}
+bool block_screen(const Grid& grid, const Lines& lines, int i0, int i1) {
+  const double e0 = lines.va + ((i0 - kScreenSlack) - lines.ua) * lines.slope;
+  const double e1 = lines.va + ((i1 + 1 + kScreenSlack) - lines.ua) * lines.slope;
+  const double lo = std::max(std::min(e0, e1), std::min(lines.va, lines.vb));
+  const double hi = std::min(std::max(e0, e1), std::max(lines.va, lines.vb));
+  if constexpr (kTransposed)
+    return box_any(grid, first_cell(lo, -1), last_cell(hi, grid.width()), i0, i1);
+  else
+    return box_any(grid, i0, i1, first_cell(lo, -1), last_cell(hi, grid.height()));
+}
 
-  bool hit(int m0, int m1, CornerRule rule) const {
-    int block = kMinBlock;
-    for (int b = m0; b <= m1; b += block, block = std::min(2 * block, kMaxBlock)) {
-      const int n = std::min(block, m1 - b + 1);  // columns b .. b + n - 1, lines b .. b + n
-      evaluate(b, n);
-      std::uint64_t acc = 0;
-      for (int k = 0; k < n; ++k) {
-        const int lo = floor_[k];
-        const int hi = ceil_[k + 1] - 1;
-        const int extra = std::clamp(hi - lo, 0, 1);
-        acc |= (bit(b + k, lo) | bit(b + k, lo + extra)) & static_cast<std::uint64_t>(lo <= hi);
-      }
-      if (rule != CornerRule::allow) {
-        // Line X = b + k (k >= 1: the right lines of this block, up to m1 + 1) at integer
-        // level t is a vertex pass with sides (X, t - 1) and (X - 1, t) in the mirrored frame.
-        const bool both = rule == CornerRule::no_squeeze;
-        for (int k = 1; k <= n; ++k) {
-          const int t = floor_[k];
-          const std::uint64_t s1 = bit(b + k, t - 1);
-          const std::uint64_t s2 = bit(b + k - 1, t);
-          acc |= (both ? (s1 & s2) : (s1 | s2)) & static_cast<std::uint64_t>(t == ceil_[k]);
-        }
-      }
-      if (acc != 0) return true;
-    }
-    return false;
+template <bool kTransposed>
+bool screened_walk(const Grid& grid, const Lines& lines, CornerRule rule) {
+  int walked = lines.c0 - 1;  // the columns walked exactly: none yet, then up to this one
+  int block = kFirstBlock;
+  for (int i0 = lines.c0; i0 <= lines.c1;
+       i0 += block, block = std::min(kGrowth * block, kMaxBlock)) {
+    const int i1 = std::min(i0 + block - 1, lines.c1);
+    if (!block_screen<kTransposed>(grid, lines, i0, i1)) continue;
+    if (scalar_walk<kTransposed>(grid, lines, std::max({lines.c0, i0 - 1, walked + 1}), i1, rule))
+      return true;
+    walked = i1;
   }
-
- private:
-  static constexpr int kMaxBlock = 64;
-
-  void evaluate(int b, int n) const {
-    const double ua = lines_.ua, va = lines_.va, slope = lines_.slope, s = s_;
-    for (int k = 0; k <= n; ++k) {
-      const double ur = static_cast<double>(b + k);
-      // sight_internal::line_crossing, spelled out so that the loop vectorises.
-      const double raw = va + (ur - ua) * slope;
-      const double r = std::nearbyint(raw);
-      const double h = s * (std::abs(raw - r) <= kSightEpsilon ? r : raw);
-      // floor and ceil from the nearest integer q (exact; std::floor does not vectorise here).
-      const double q = std::nearbyint(h);
-      floor_[k] = static_cast<int>(q) - static_cast<int>(q > h);
-      ceil_[k] = static_cast<int>(q) + static_cast<int>(q < h);
-    }
-  }
-
-  // Cell (u, mirrored v) of the walk frame, as 0 or 1.
-  std::uint64_t bit(int u, int j) const {
-    const int v = j ^ flip_;
-    const int x = kTransposed ? v : u;
-    const int y = kTransposed ? u : v;
-    const auto b = static_cast<unsigned>(x + 1);
-    return (bits_[static_cast<std::size_t>(y + 1) * words_ + (b >> 6)] >> (b & 63U)) & 1U;
-  }
-
-  const std::uint64_t* bits_;
-  std::size_t words_;
-  const Lines& lines_;
-  double s_;
-  int flip_;
-  mutable int floor_[kMaxBlock + 1];
-  mutable int ceil_[kMaxBlock + 1];
-};
+  return false;
+}
 
 template <bool kTransposed>
 bool cells_hit(const Grid& grid, const Lines& lines, CornerRule rule) {
-  if (!kTransposed && lines.slope == 0.0) {
-    // Every line at v = va, no vertex pass: the rows around va, every column, a word at a time.
+  if (lines.slope == 0.0) {
+    // Every line at v = va, no vertex pass: the rows around va of every column. Transposed,
+    // each column is one grid row: a word test per row; else a word test per row of the span.
     const int j_lo = static_cast<int>(std::ceil(lines.va)) - 1;
     const int j_hi = static_cast<int>(std::floor(lines.va));
-    for (int j = j_lo; j <= j_hi; ++j)
-      if (row_any(grid, j, lines.c0, lines.c1)) return true;
+    if constexpr (kTransposed) {
+      for (int i = lines.c0; i <= lines.c1; ++i)
+        if (row_any(grid, i, j_lo, j_hi)) return true;
+    } else {
+      for (int j = j_lo; j <= j_hi; ++j)
+        if (row_any(grid, j, lines.c0, lines.c1)) return true;
+    }
     return false;
   }
-  // The first kLead columns one at a time, like the reference (most blocked segments stop
-  // there); then, on a long segment, the columns whose lines are both interior (i > ua and
-  // i + 1 < ub) in vectorised blocks; the one or two last columns one at a time again.
-  const int m1 = std::min(static_cast<int>(std::ceil(lines.ub)) - 2, lines.c1);
-  const int split = std::max(static_cast<int>(std::floor(lines.ua)) + 1, lines.c0 + kLead);
-  if (lines.slope == 0.0 || m1 - split + 1 < kMinBlock)
-    return scalar_walk<kTransposed>(grid, lines, lines.c0, lines.c1, rule);
-  return scalar_walk<kTransposed>(grid, lines, lines.c0, split - 1, rule) ||
-         MiddleColumns<kTransposed>(grid, lines).hit(split, m1, rule) ||
-         scalar_walk<kTransposed>(grid, lines, m1 + 1, lines.c1, rule);
+  return screened_walk<kTransposed>(grid, lines, rule);
 }
 
 // Each blocked bit among x0..x1 of row y (the candidates), judged by `too_close(x)`.
@@ -332,39 +309,34 @@ bool clearance_free(const Grid& grid, const Walk& w, double slope, const SightRu
                       : !shallow_clearance_hit(grid, w, slope, rule.radius);
 }
 
+// Whether p lies well inside a blocked cell (both coordinates further than kInsideMargin from
+// the cell's edges): the reference walk touches that cell in the first or last column, so the
+// segment is not free. Near an edge the reference may leave the cell to the corner rule (an
+// endpoint snapped onto a vertex pass), so such a point is left to the walk. Most segments that
+// are not free on a dense map stop here.
+constexpr double kInsideMargin = 1e-6;
+inline bool endpoint_blocked(const Grid& grid, Point p) {
+  // Written so that NaN fails the range test; the cell is then one of the padded grid's.
+  if (!(p.x >= 0.0 && p.x < grid.width() && p.y >= 0.0 && p.y < grid.height())) return false;
+  const double fx = std::floor(p.x);
+  const double fy = std::floor(p.y);
+  const bool inside = p.x - fx > kInsideMargin && p.x - fx < 1.0 - kInsideMargin &&
+                      p.y - fy > kInsideMargin && p.y - fy < 1.0 - kInsideMargin;
+  return inside && grid.blocked(static_cast<int>(fx), static_cast<int>(fy));
+}
+
 bool free_fast(const Grid& grid, Point a, Point b, const SightRule& rule) {
+  if (endpoint_blocked(grid, a) || endpoint_blocked(grid, b)) return false;
   Walk w;
   if (!sight_internal::canonical_walk(grid, a, b, w)) return false;
-  // Short segments: the reference walk itself is the fastest single check (perf/README.md).
-  if (w.ub - w.ua < kSingleVectorFrom) return !sight_internal::reference_walk(grid, w, rule);
+  // A point: the reference's cells around it.
+  if (w.ub == w.ua) return !sight_internal::reference_walk(grid, w, rule);
   const double slope = (w.vb - w.va) / (w.ub - w.ua);
   const Lines lines(w, slope);
   if (w.transposed ? cells_hit<true>(grid, lines, rule.corners)
                    : cells_hit<false>(grid, lines, rule.corners))
     return false;
   return clearance_free(grid, w, slope, rule);
-}
-
-// Up to kLanes segments a[k]-b[k]: out[k] = 1 when free. The cells test runs in SIMD lanes; the
-// clearance test, where the rule has one, per lane on the lanes it left free.
-void batch_free(const Grid& grid, const Point* a, const Point* b, int count, const SightRule& rule,
-                std::uint8_t* out) {
-  // A batch of long segments only: the lanes would send every one to the single check anyway.
-  bool any_short = false;
-  for (int k = 0; k < count; ++k)
-    any_short |= !(std::max(std::abs(b[k].x - a[k].x), std::abs(b[k].y - a[k].y)) >= kLongForLanes);
-  if (!any_short) {
-    for (int k = 0; k < count; ++k) out[k] = free_fast(grid, a[k], b[k], rule) ? 1 : 0;
-    return;
-  }
-  sight_internal::LaneVerdicts v;
-  sight_internal::walk_lanes(grid, a, b, count, rule.corners, v);
-  for (int k = 0; k < count; ++k) {
-    if (v.single[k])
-      out[k] = free_fast(grid, a[k], b[k], rule) ? 1 : 0;
-    else
-      out[k] = v.cells_free[k] && clearance_free(grid, v.walk[k], v.slope[k], rule) ? 1 : 0;
-  }
 }
 
 }  // namespace
@@ -377,33 +349,20 @@ bool segment_free(const Grid& grid, Point a, Point b, const SightRule& rule) {
 void segments_free(const Grid& grid, std::span<const Point> a, std::span<const Point> b,
                    const SightRule& rule, std::span<std::uint8_t> out) {
   count_collision_checks(static_cast<std::int64_t>(out.size()));
-  for (std::size_t i = 0; i < out.size(); i += sight_internal::kLanes) {
-    const int count =
-        static_cast<int>(std::min<std::size_t>(sight_internal::kLanes, out.size() - i));
-    batch_free(grid, a.data() + i, b.data() + i, count, rule, out.data() + i);
-  }
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = free_fast(grid, a[i], b[i], rule) ? 1 : 0;
 }
 
 void segments_free_from(const Grid& grid, Point from, std::span<const Point> to,
                         const SightRule& rule, std::span<std::uint8_t> out) {
   count_collision_checks(static_cast<std::int64_t>(out.size()));
-  Point froms[sight_internal::kLanes];
-  std::fill(std::begin(froms), std::end(froms), from);
-  for (std::size_t i = 0; i < out.size(); i += sight_internal::kLanes) {
-    const int count =
-        static_cast<int>(std::min<std::size_t>(sight_internal::kLanes, out.size() - i));
-    batch_free(grid, froms, to.data() + i, count, rule, out.data() + i);
-  }
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = free_fast(grid, from, to[i], rule) ? 1 : 0;
 }
 
 void points_free(const Grid& grid, std::span<const Point> points, const SightRule& rule,
                  std::span<std::uint8_t> out) {
   count_collision_checks(static_cast<std::int64_t>(out.size()));
-  for (std::size_t i = 0; i < out.size(); i += sight_internal::kLanes) {
-    const int count =
-        static_cast<int>(std::min<std::size_t>(sight_internal::kLanes, out.size() - i));
-    batch_free(grid, points.data() + i, points.data() + i, count, rule, out.data() + i);
-  }
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = free_fast(grid, points[i], points[i], rule) ? 1 : 0;
 }
 
 }  // namespace agv

@@ -1,24 +1,22 @@
 #pragma once
-// Batched and vectorised line of sight over the grid's bit-packed rows (docs/PLANNERS.md "Line of
-// sight and clearance": the hot loop of PSO and of every shortcut pass). Same verdicts, bit for
-// bit, as the reference walk (segment_free_reference / check_segment in core/line_of_sight.h)
-// for every SightRule: tests/core/test_los_simd.cpp checks 100 000 random segments per mode.
+// Word-parallel line of sight over the grid's bit-packed rows (docs/PLANNERS.md "Line of sight
+// and clearance": the hot loop of PSO and of every shortcut pass). Same verdicts, bit for bit, as
+// the reference walk (segment_free_reference / check_segment in core/line_of_sight.h) for every
+// SightRule: tests/core/test_los_simd.cpp compares them on random segments of every mode.
 //
-// Three paths, chosen by measurement (perf/bench_los.cpp, perf/README.md "Line of sight"):
-// - Batches of short segments (under 16 cells along the major axis): 8 segments side by side
-//   in SIMD lanes (core/line_of_sight_lanes.cpp), each lane stepping the reference walk one
-//   column per step with the same IEEE operations; cell bits by gathers; no per-segment or
-//   per-cell branch. 1.3-1.9x the reference on short segments.
-// - A single long segment (24 cells and more): the first columns one at a time (most blocked
-//   segments stop there), then blocks whose line crossings are evaluated in a vectorised loop and
-//   whose covered cells are ORed without a branch per cell. Up to 1.6x the reference.
-// - A single short segment: the reference walk itself, which nothing here beats.
-// The clearance test (obstacle circles) of the vectorised paths takes each grid row's candidate
-// cells as one masked word and computes the reference's exact squared distance only for the
-// blocked bits among them.
+// One path for single segments and batches alike (core/line_of_sight_batch.cpp), chosen by
+// measurement on AVX2 and AVX-512 CPUs (perf/bench_los.cpp, perf/README.md "Line of sight"):
+// - an endpoint well inside a blocked cell ends the check (most segments on a dense map);
+// - the walk's columns go in growing blocks, each screened first by one masked word test per
+//   grid row over a box that holds every cell the walk could touch there (64 cells a test); only
+//   a block whose box holds an obstacle is walked exactly, column by column, as the reference
+//   walks it. No vector-ISA code: the same kernel runs on every x86-64 CPU. (8-wide GCC vector
+//   lanes with gathers ran 0.1-0.25x the reference on AVX2 and lost at some cases on AVX-512.)
+// The clearance test (obstacle circles) takes each grid row's candidate cells as one masked
+// word and computes the reference's exact squared distance only for the blocked bits among them.
 //
-// The shared segment_free() of core/line_of_sight.h is the single-segment dispatch, so
-// shortcutting, key-point search, curve checks and the sampling planners all use it.
+// The shared segment_free() of core/line_of_sight.h is the same check, so shortcutting,
+// key-point search, curve checks and the sampling planners all use it.
 
 #include <cstdint>
 #include <span>

@@ -76,18 +76,4 @@ inline bool canonical_walk(const Grid& grid, Point a, Point b, Walk& w) {
 // canonicalisation.
 SightHit reference_walk(const Grid& grid, const Walk& w, const SightRule& rule);
 
-// The batched cells test (line_of_sight_lanes.cpp): segments a[k]-b[k], k < count <= kLanes,
-// walked side by side in SIMD lanes. Per lane: cells_free = inside the grid and the cells test
-// (corner rule included) passes, exactly as the reference walk decides; single = too long for the
-// lanes, not judged (check it alone); walk and slope = the canonical walk, for the clearance test.
-inline constexpr int kLanes = 8;
-struct LaneVerdicts {
-  bool cells_free[kLanes];
-  bool single[kLanes];
-  Walk walk[kLanes];
-  double slope[kLanes];
-};
-void walk_lanes(const Grid& grid, const Point* a, const Point* b, int count, CornerRule rule,
-                LaneVerdicts& out);
-
 }  // namespace agv::sight_internal

@@ -180,16 +180,20 @@ inline int last_cell(double hi, int max) {
 // Whether the box of walk columns i0..i1 holds a blocked cell. Transposed, a walk column is a
 // grid row and the box spans the segment's v extent (grid x); else the box is those grid columns
 // over the rows of the v extent.
+// With a pad, the box grows by that many cells on every side (within the padded grid).
 template <bool kTransposed>
-bool block_screen(const Grid& grid, const Lines& lines, int i0, int i1) {
+bool block_screen(const Grid& grid, const Lines& lines, int i0, int i1, int pad = 0) {
   const double e0 = lines.va + ((i0 - kScreenSlack) - lines.ua) * lines.slope;
   const double e1 = lines.va + ((i1 + 1 + kScreenSlack) - lines.ua) * lines.slope;
   const double lo = std::max(std::min(e0, e1), std::min(lines.va, lines.vb));
   const double hi = std::min(std::max(e0, e1), std::max(lines.va, lines.vb));
-  if constexpr (kTransposed)
-    return box_any(grid, first_cell(lo, -1), last_cell(hi, grid.width()), i0, i1);
-  else
-    return box_any(grid, i0, i1, first_cell(lo, -1), last_cell(hi, grid.height()));
+  const int u_max = kTransposed ? grid.height() : grid.width();
+  const int v_max = kTransposed ? grid.width() : grid.height();
+  const int u0 = std::max(i0 - pad, -1);
+  const int u1 = std::min(i1 + pad, u_max);
+  const int v0 = std::max(first_cell(lo, -1) - pad, -1);
+  const int v1 = std::min(last_cell(hi, v_max) + pad, v_max);
+  return kTransposed ? box_any(grid, v0, v1, u0, u1) : box_any(grid, u0, u1, v0, v1);
 }
 
 template <bool kTransposed>
@@ -302,11 +306,36 @@ bool shallow_clearance_hit(const Grid& grid, const Walk& w, double slope, double
   return false;
 }
 
-bool clearance_free(const Grid& grid, const Walk& w, double slope, const SightRule& rule) {
+// Clearance screens: every obstacle centre closer than the radius to a point of the segment lies
+// within radius + 1/2 of it in both axes, so within ceil(radius) + 1 cells of the cells box of
+// the block holding that point. Boxes padded so are screened a block of kClearanceBlock columns
+// at a time; all free means no candidate at all. Boxes stay under 64 cells wide up to a pad of
+// kMaxClearancePad; wider clearances go to the scan directly, and so does a segment that
+// spans fewer than kMinClearanceScreen + 1 columns: its padded box is mostly border.
+constexpr int kClearanceBlock = 16;
+constexpr int kMaxClearancePad = 20;
+constexpr int kMinClearanceScreen = 4;  // perf/bench_los.cpp, circles at 2 and 8 cells
+
+template <bool kTransposed>
+bool clearance_screened_free(const Grid& grid, const Lines& lines, int pad) {
+  for (int i0 = lines.c0; i0 <= lines.c1; i0 += kClearanceBlock)
+    if (block_screen<kTransposed>(grid, lines, i0, std::min(i0 + kClearanceBlock - 1, lines.c1),
+                                  pad))
+      return false;
+  return true;
+}
+
+bool clearance_free(const Grid& grid, const Walk& w, const Lines& lines, const SightRule& rule) {
   // (At radius <= 0.5 the cells test already implies the clearance, as in the reference.)
   if (rule.kind != SightRule::Kind::clearance || !(rule.radius > 0.5)) return true;
-  return w.transposed ? !steep_clearance_hit(grid, w, slope, rule.radius)
-                      : !shallow_clearance_hit(grid, w, slope, rule.radius);
+  if (rule.radius < kMaxClearancePad - 1 && lines.c1 - lines.c0 >= kMinClearanceScreen) {
+    const int pad = static_cast<int>(std::ceil(rule.radius)) + 1;
+    if (w.transposed ? clearance_screened_free<true>(grid, lines, pad)
+                     : clearance_screened_free<false>(grid, lines, pad))
+      return true;
+  }
+  return w.transposed ? !steep_clearance_hit(grid, w, lines.slope, rule.radius)
+                      : !shallow_clearance_hit(grid, w, lines.slope, rule.radius);
 }
 
 // Whether p lies well inside a blocked cell (both coordinates further than kInsideMargin from
@@ -336,7 +365,7 @@ bool free_fast(const Grid& grid, Point a, Point b, const SightRule& rule) {
   if (w.transposed ? cells_hit<true>(grid, lines, rule.corners)
                    : cells_hit<false>(grid, lines, rule.corners))
     return false;
-  return clearance_free(grid, w, slope, rule);
+  return clearance_free(grid, w, lines, rule);
 }
 
 }  // namespace

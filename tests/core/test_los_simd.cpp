@@ -220,6 +220,29 @@ TEST(LosSimd, EndpointsInBlockedCellsNearEdgesAndVertices) {
         << describe(rule);
 }
 
+// The clearance screens: one obstacle on open ground, segments passing it at every distance
+// around each radius, in every direction, so that a screen box one cell too small would call a
+// segment free that the scan finds too close.
+TEST(LosSimd, ClearanceScreensAroundOneObstacle) {
+  Generator gen(7);
+  Grid g(120, 120);
+  g.set_blocked(60, 60, true);
+  const std::vector<SightRule> rules = all_rules();
+  for (int s = 0; s < 20000; ++s) {
+    const double angle = gen.unit() * 6.283185307179586;
+    const double offset = (gen.unit() - 0.5) * 8.0;  // distance of the line from the centre
+    const double along = (gen.unit() - 0.5) * 40.0;
+    const double length = 1.0 + gen.unit() * 50.0;
+    const double cx = 60.5 - offset * std::sin(angle) + along * std::cos(angle);
+    const double cy = 60.5 + offset * std::cos(angle) + along * std::sin(angle);
+    const Point a{cx - length * std::cos(angle), cy - length * std::sin(angle)};
+    const Point b{cx + length * std::cos(angle), cy + length * std::sin(angle)};
+    for (const SightRule& rule : rules)
+      ASSERT_EQ(segment_free(g, a, b, rule), segment_free_reference(g, a, b, rule))
+          << a.x << "," << a.y << " " << b.x << "," << b.y << " " << describe(rule);
+  }
+}
+
 // Degenerate slopes: long, almost flat segments whose crossings snap onto a row line over many
 // columns, and exact vertex runs, across word boundaries.
 TEST(LosSimd, NearlyFlatAndVertexRuns) {

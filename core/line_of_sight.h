@@ -71,9 +71,10 @@ struct SightHit {
 // axis; same verdict as segment_free.
 SightHit check_segment(const Grid& grid, Point a, Point b, const SightRule& rule);
 
-// The verdict alone (core/line_of_sight_batch.cpp): the reference walk for short segments, a
-// vectorised walk for long ones; the same answer as segment_free_reference, bit for bit. Many
-// segments at once: segments_free() and friends in core/line_of_sight_batch.h.
+// The verdict alone (core/line_of_sight_batch.cpp): blocks of columns screened by word tests on
+// the bit-packed rows, the reference's column walk only where a screen finds an obstacle; the
+// same answer as segment_free_reference, bit for bit. Many segments at once: segments_free()
+// and friends in core/line_of_sight_batch.h.
 bool segment_free(const Grid& grid, Point a, Point b, const SightRule& rule = {});
 
 // The reference verdict (the walk of check_segment), kept for tests and benchmarks.

@@ -26,20 +26,27 @@ constexpr std::uint64_t kAllBits = ~std::uint64_t{0};
 // each is then judged by the reference's exact squared distance.
 constexpr double kBandSlack = 1e-6;
 
+// Columns x0..x1 (x0 <= x1 in [-1, W]) of a bit row: words w0..w1 of it, the first one masked by
+// `first`, the last by `last` (the same word with both masks when w0 == w1).
+struct WordSpan {
+  unsigned w0, w1;
+  std::uint64_t first, last;
+};
+inline WordSpan word_span(int x0, int x1) {
+  const auto b0 = static_cast<unsigned>(x0 + 1);
+  const auto b1 = static_cast<unsigned>(x1 + 1);
+  return {b0 >> 6, b1 >> 6, kAllBits << (b0 & 63U), kAllBits >> (63U - (b1 & 63U))};
+}
+
 // Any blocked cell among x0..x1 of grid row y (x0 <= x1 in [-1, W], y in [-1, H]): one masked
 // word, or a masked OR over the words of a long interval.
 inline bool row_any(const Grid& grid, int y, int x0, int x1) {
   const std::uint64_t* row = grid.bit_row(y);
-  const auto b0 = static_cast<unsigned>(x0 + 1);
-  const auto b1 = static_cast<unsigned>(x1 + 1);
-  const unsigned w0 = b0 >> 6;
-  const unsigned w1 = b1 >> 6;
-  const std::uint64_t first = kAllBits << (b0 & 63U);
-  const std::uint64_t last = kAllBits >> (63U - (b1 & 63U));
-  if (w0 == w1) return (row[w0] & first & last) != 0;
-  std::uint64_t acc = row[w0] & first;
-  for (unsigned w = w0 + 1; w < w1; ++w) acc |= row[w];
-  return (acc | (row[w1] & last)) != 0;
+  const WordSpan s = word_span(x0, x1);
+  if (s.w0 == s.w1) return (row[s.w0] & s.first & s.last) != 0;
+  std::uint64_t acc = row[s.w0] & s.first;
+  for (unsigned w = s.w0 + 1; w < s.w1; ++w) acc |= row[w];
+  return (acc | (row[s.w1] & s.last)) != 0;
 }
 
 inline bool cell_bit(const Grid& grid, int x, int y) {
@@ -153,18 +160,14 @@ constexpr int kMaxBlock = 32;
 
 // Any blocked cell in rows y0..y1 among columns x0..x1 (x1 - x0 < 64, so at most two words).
 inline bool box_any(const Grid& grid, int x0, int x1, int y0, int y1) {
-  const auto b0 = static_cast<unsigned>(x0 + 1);
-  const auto b1 = static_cast<unsigned>(x1 + 1);
-  const unsigned w0 = b0 >> 6;
-  const unsigned w1 = b1 >> 6;
-  std::uint64_t m0 = kAllBits << (b0 & 63U);
-  const std::uint64_t m1 = kAllBits >> (63U - (b1 & 63U));
-  if (w0 == w1) m0 &= m1;
-  const std::uint64_t m1_only = w0 == w1 ? 0 : m1;
+  const WordSpan s = word_span(x0, x1);
+  // Two words read per row, without a branch: the second masked to nothing when it is the first.
+  const std::uint64_t m0 = s.w0 == s.w1 ? s.first & s.last : s.first;
+  const std::uint64_t m1 = s.w0 == s.w1 ? 0 : s.last;
   std::uint64_t acc = 0;
   for (int y = y0; y <= y1; ++y) {
     const std::uint64_t* row = grid.bit_row(y);
-    acc |= (row[w0] & m0) | (row[w1] & m1_only);
+    acc |= (row[s.w0] & m0) | (row[s.w1] & m1);
   }
   return acc != 0;
 }
@@ -235,12 +238,11 @@ template <class TooClose>
 bool any_candidate(const Grid& grid, int y, int x0, int x1, TooClose&& too_close) {
   if (x0 > x1) return false;
   const std::uint64_t* row = grid.bit_row(y);
-  const auto b0 = static_cast<unsigned>(x0 + 1);
-  const auto b1 = static_cast<unsigned>(x1 + 1);
-  for (unsigned w = b0 >> 6; w <= (b1 >> 6); ++w) {
+  const WordSpan s = word_span(x0, x1);
+  for (unsigned w = s.w0; w <= s.w1; ++w) {
     std::uint64_t bits = row[w];
-    if (w == (b0 >> 6)) bits &= kAllBits << (b0 & 63U);
-    if (w == (b1 >> 6)) bits &= kAllBits >> (63U - (b1 & 63U));
+    if (w == s.w0) bits &= s.first;
+    if (w == s.w1) bits &= s.last;
     while (bits != 0) {
       const int x = static_cast<int>(w * 64U + static_cast<unsigned>(std::countr_zero(bits))) - 1;
       if (too_close(x)) return true;

@@ -1,9 +1,9 @@
 // Grid search throughput (perf/README.md "Grid search"): A* and Dijkstra, through the planner
 // interface, on uniform random maps (corner to corner) and on the five MovingAI maps of the full
 // sets (a fixed subset of each .scen spanning its buckets), found as the tests find them
-// (tests/movingai_data.h); without them, on the two maps shipped in tests/data/movingai, named
-// `*_shipped` since their queries are another subset. One iteration runs the case's whole query
-// set; expansions_per_s is the expansion count of those searches over the iteration time.
+// (tests/movingai_data.h); without them, on the random maps alone. One iteration runs the case's
+// whole query set; expansions_per_s is the expansion count of those searches over the iteration
+// time.
 
 #include <benchmark/benchmark.h>
 
@@ -96,11 +96,8 @@ int main(int argc, char** argv) {
                             "Berlin_0_512.map"})
       cases.push_back(std::make_unique<Case>(movingai_case(sets, map, "")));
   } else {
-    std::fprintf(stderr, "bench_search: %s; using the maps shipped in tests/data/movingai\n",
+    std::fprintf(stderr, "bench_search: %s; the MovingAI cases are left out\n",
                  testdata::kNoSetsReason);
-    for (const char* map : {"random512-10-0.map", "maze512-1-0.map"})
-      cases.push_back(
-          std::make_unique<Case>(movingai_case(testdata::shipped_maps(), map, "_shipped")));
   }
 
   static std::vector<ConfiguredPlanner> planners;

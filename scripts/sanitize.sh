@@ -60,7 +60,7 @@ tsan_tbb() {
   echo "sanitize: built libtbb $ver with TSan in $dir/install"
 }
 
-asan_exclude='MovingAiScenarios|FullSets|^ReferenceBounds\.|^Fusion\.ReachesTheGoalOnRandomSolvableMaps$|^HmaStar\.SoundOnPaperMapsAndPairedAgainstAStar$|^Sweep\.ReportIsIdenticalOnOneAndTwoThreads$|^Fusion\.AllThreeVariantsRunWithMovingAndUnknownObstacles$|^Fusion\.RunMetricsCoverTheUnknownCellsAndTakeTheSimulatedTime$|^Fusion\.LocalGoalsAreTheKeyNodesOrTheCurveSamples$|^FusionSweep\.ReportIsIdenticalOnOneAndTwoThreads$|^cli_resume_interrupt$|^plot_scripts$|^html_report$|^report_odd_labels$|^cli_plugin$|^Registry/PlannerContract\..*/ompl_(rrtstar|informed_rrtstar|bitstar|lazyprmstar)( |$)|^Registry/PlannerContract\.(DeadlineCutsEveryPhaseOfALongPlan|WaypointCountIsThatOfThePathReturned)/(fusion_[a-z]+_dwa|dwa)$|^Registry/PlannerContract\.(ReportsTheWorkCountersItDeclares|SameSeedSameResult)/fusion_(alt|kin)_dwa$'
+asan_exclude='MovingAiScenarios|\.FullSets|^ReferenceBounds\.|^Fusion\.ReachesTheGoalOnRandomSolvableMaps$|^HmaStar\.SoundOnPaperMapsAndPairedAgainstAStar$|^Sweep\.ReportIsIdenticalOnOneAndTwoThreads$|^Fusion\.AllThreeVariantsRunWithMovingAndUnknownObstacles$|^Fusion\.RunMetricsCoverTheUnknownCellsAndTakeTheSimulatedTime$|^Fusion\.LocalGoalsAreTheKeyNodesOrTheCurveSamples$|^FusionSweep\.ReportIsIdenticalOnOneAndTwoThreads$|^cli_resume_interrupt$|^plot_scripts$|^html_report$|^report_odd_labels$|^cli_plugin$|^Registry/PlannerContract\..*/ompl_(rrtstar|informed_rrtstar|bitstar|lazyprmstar)( |$)|^Registry/PlannerContract\.(DeadlineCutsEveryPhaseOfALongPlan|WaypointCountIsThatOfThePathReturned)/(fusion_[a-z]+_dwa|dwa)$|^Registry/PlannerContract\.(ReportsTheWorkCountersItDeclares|SameSeedSameResult)/fusion_(alt|kin)_dwa$'
 
 seed_costs() {  # BUILD_DIR COST_FILE: ctest's cost data for a fresh build folder (long tests first)
   local data=$1/Testing/Temporary/CTestCostData.txt
@@ -81,8 +81,8 @@ for part in "${parts[@]}"; do
       echo "sanitize: asan build took $(( $(date +%s) - start )) s"
       # Left to the plain suite: tests labelled `long`, and by default (ASAN_CTEST_EXCLUDE
       # overrides) the few whose inputs are big, not their code: the MovingAI scenario suites
-      # and every test of the full sets (*FullSets*: whole 512x512 benchmark maps; the readers and
-      # a sweep of the shipped maps run here), the fusion planner on random maps (9 min), HMA* on
+      # and every GoogleTest of the MovingAI sets (Suite.FullSets*: whole 512x512 benchmark maps;
+      # the readers' own small maps and cli_scen_commands_FullSets' 90 queries run here), the fusion planner on random maps (9 min), HMA* on
       # the papers' maps (3 min), the any-angle bound over 1,080 maps and every planner, and the
       # 1-vs-2-thread sweep of the whole default planner set (killed at 464 s on 2 cores; that
       # determinism runs in the plain suite, and the sweep suite runs under TSan below); and,

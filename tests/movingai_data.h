@@ -1,8 +1,8 @@
 #pragma once
-// Where the tests find MovingAI benchmark maps (docs/TESTING.md "Test data"): a small subset
-// ships in tests/data/movingai/ and is always there; the full sets are optional, looked up by
-// one rule, and a test that needs them is skipped by name when they are absent. Such a test has
-// "FullSets" in its name: scripts/test.sh fails a run in which any other test was skipped.
+// Where the tests find MovingAI benchmark maps (docs/TESTING.md "Test data"): none ship with the
+// checkout; the sets are looked up by one rule, and a test that needs them is skipped by name
+// when they are absent. Such a test has "FullSets" in its name: scripts/test.sh fails a run in
+// which any other test was skipped.
 
 #include <cstdlib>
 #include <filesystem>
@@ -10,12 +10,7 @@
 
 namespace agv::testdata {
 
-// The shipped subset (two synthetic 512x512 maps, each with a slice of its published .scen).
-inline std::string shipped_maps() {
-  return (std::filesystem::path(AGV_SOURCE_DIR) / "tests" / "data" / "movingai").string();
-}
-
-// The full sets: $AGVBENCH_MOVINGAI_DIR if set (it must then exist: a mistyped folder is an
+// The sets: $AGVBENCH_MOVINGAI_DIR if set (it must then exist: a mistyped folder is an
 // error, not a silent skip), else ../shared/maps beside the checkout if present, else "".
 inline std::string movingai_sets() {
   namespace fs = std::filesystem;

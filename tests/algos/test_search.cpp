@@ -105,13 +105,11 @@ TEST(GridSearchParams, DefaultsAndValidation) {
 
 // --- (1) MovingAI optimal lengths ------------------------------------------------------------
 
-// One case per (map, solver), so ctest can spread the CPU-minutes over its jobs. The shipped
-// slices (tests/data/movingai) run on every clone, every query; the full sets, where present, add
-// the game and city maps and the whole scenario files: every query, but every 4th of the maze's
-// 12,120 (3,030 over all its buckets, the shipped slice among them; all of them took 3 of the
-// suite's 12 CPU-minutes, mostly in the maze's long corridors, to prove what a quarter proves).
+// One case per (map, solver), so ctest can spread the CPU-minutes over its jobs: every query of
+// the full sets' files, but every 4th of the maze's 12,120 (3,030 over all its buckets; all of
+// them took 3 of the suite's 12 CPU-minutes, mostly in the maze's long corridors, to prove what a
+// quarter proves).
 struct ScenarioCase {
-  bool shipped;
   const char* map;
   const char* solver;
   std::size_t every = 1;  // check queries 0, every, 2 * every, ...
@@ -119,16 +117,14 @@ struct ScenarioCase {
 
 // What ctest's test list shows for a case (gtest would print its bytes, pointers included).
 void PrintTo(const ScenarioCase& c, std::ostream* os) {
-  *os << (c.shipped ? "tests/data/movingai/" : "full sets/") << c.map << " " << c.solver
-      << " every " << c.every;
+  *os << c.map << " " << c.solver << " every " << c.every;
 }
 
-std::vector<ScenarioCase> scenario_cases(bool shipped, std::vector<const char*> maps) {
+std::vector<ScenarioCase> scenario_cases(std::vector<const char*> maps) {
   std::vector<ScenarioCase> cases;
   for (const char* map : maps)
     for (const char* solver : {"astar", "dijkstra", "shortest_length"})
-      cases.push_back(
-          {shipped, map, solver, !shipped && std::string(map) == "maze512-1-0.map" ? 4u : 1u});
+      cases.push_back({map, solver, std::string(map) == "maze512-1-0.map" ? 4u : 1u});
   return cases;
 }
 
@@ -138,12 +134,8 @@ class MovingAiScenarios : public ::testing::TestWithParam<ScenarioCase> {
 };
 
 TEST_P(MovingAiScenarios, OptimalOnEveryScenario) {
-  if (GetParam().shipped) {
-    check_every_scenario(testdata::shipped_maps() + "/");
-  } else {
-    AGV_MOVINGAI_SETS_OR_SKIP(sets);
-    check_every_scenario(sets + "/");
-  }
+  AGV_MOVINGAI_SETS_OR_SKIP(sets);
+  check_every_scenario(sets + "/");
 }
 
 void MovingAiScenarios::check_every_scenario(const std::string& dir) const {
@@ -187,14 +179,10 @@ std::string scenario_case_name(const ::testing::TestParamInfo<ScenarioCase>& inf
   return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Shipped, MovingAiScenarios,
-                         ::testing::ValuesIn(scenario_cases(true, {"random512-10-0.map",
-                                                                   "maze512-1-0.map"})),
-                         scenario_case_name);
 INSTANTIATE_TEST_SUITE_P(FullSets, MovingAiScenarios,
-                         ::testing::ValuesIn(scenario_cases(
-                             false, {"arena2.map", "random512-10-0.map", "maze512-1-0.map",
-                                     "8room_000.map", "Berlin_0_512.map"})),
+                         ::testing::ValuesIn(scenario_cases({"arena2.map", "random512-10-0.map",
+                                                             "maze512-1-0.map", "8room_000.map",
+                                                             "Berlin_0_512.map"})),
                          scenario_case_name);
 
 // --- (2) A* == Dijkstra on random maps, legal moves -----------------------------------------

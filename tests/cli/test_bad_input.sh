@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
 # Bad input (DEVELOPERS.md non-negotiable 5): each case must print a clear message naming the
 # field or line, exit with code 2, and leave no report file behind.
-# Usage: test_bad_input.sh AGVBENCH_BINARY MAPS_DIR
+# Usage: test_bad_input.sh AGVBENCH_BINARY
 set -u
 bin=$1
-maps=$2
 source "$(dirname "$0")/lib.sh"
 
 good_config() {  # a small valid config; $1 = report path

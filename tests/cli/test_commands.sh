@@ -1,21 +1,10 @@
 #!/usr/bin/env bash
-# The happy paths of every subcommand, as a user types them. Usage: test_commands.sh AGVBENCH SOURCE_DIR MAPS_DIR
-# (MAPS_DIR: the MovingAI maps shipped in tests/data/movingai)
+# The happy paths of every subcommand, as a user types them (on MovingAI maps:
+# test_scen_commands.sh). Usage: test_commands.sh AGVBENCH SOURCE_DIR
 set -u
 bin=$1
 src=$2
-maps=$3
 source "$(dirname "$0")/lib.sh"
-check() {  # NAME COMMAND...
-  local name=$1
-  shift
-  if "$@" >out.txt 2>err.txt; then
-    ok "$name"
-  else
-    bad "$name (exit $?)"
-    cat out.txt err.txt | tail -20
-  fi
-}
 
 check "list --json parses and names astar and rooms" sh -c "'$bin' list --json | $py -c 'import json,sys; r=json.load(sys.stdin); assert set(r)=={\"planners\",\"generators\",\"map_sources\"}; assert [m[\"name\"] for m in r[\"map_sources\"]]==[\"movingai\",\"image\"]; assert any(p[\"name\"]==\"astar\" for p in r[\"planners\"]); assert all(\"params\" in p for p in r[\"planners\"] + r[\"generators\"]); g={x[\"name\"]: x for x in r[\"generators\"]}; assert [p[\"name\"] for p in g[\"rooms\"][\"params\"]]==[\"room_size\",\"door_width\"]'"
 check "list prints parameters" sh -c "'$bin' list | grep -q 'corner_rule'"
@@ -42,13 +31,6 @@ assert other[\"map\"][\"rows\"] != rows, \"room_size did not reach the generator
 check "validate the quick config" sh -c "cd '$src' && '$bin' validate configs/quick.json"
 check "plan on a generated grid draws S, G and a path" sh -c "'$bin' plan --planner astar --planner dijkstra --size 24 --density 0.2 --seed 3 | grep -q 'S' && '$bin' plan --size 24 --density 0.2 | grep -q 'astar: success'"
 check "plan --json-out writes a path document" sh -c "'$bin' plan --size 16 --density 0.1 --json-out p.json --no-ascii >/dev/null && $py -c 'import json; d=json.load(open(\"p.json\")); assert d[\"runs\"][0][\"outcome\"]==\"success\" and len(d[\"runs\"][0][\"path\"])>1'"
-check "plan on a MovingAI map" sh -c "'$bin' plan --map '$maps/random512-10-0.map' --start 174,10 --goal 172,9 --param corner_rule=no_corner_cut --no-ascii | grep -q 'path_length = 2.414'"
-# The scen command's path, on the first queries of each shipped file: the optima of every query are
-# the test suite's (MovingAiScenarios), and this script also runs under the sanitizers.
-head -n 61 "$maps/random512-10-0.map.scen" >random60.scen
-head -n 31 "$maps/maze512-1-0.map.scen" >maze30.scen
-check "scen: random512-10-0 optimal under astar" sh -c "'$bin' scen '$maps/random512-10-0.map' random60.scen | grep -q ' 0 mismatches'"
-check "scen --json: dijkstra on maze512-1-0" sh -c "'$bin' scen '$maps/maze512-1-0.map' maze30.scen --planner dijkstra --json | $py -c 'import json,sys; r=json.load(sys.stdin); assert r[\"mismatches\"]==0 and r[\"queries\"]==30 and \"median_query_ns\" in r[\"timing\"]'"
 # The quick config's shape (every generator, size, density and planner) at 2 maps per cell: the
 # path of a run, not its volume (the sweep suite has that), so that it stays short under ASan.
 $py -c "import json,sys; c=json.load(open(sys.argv[1])); c['maps_per_cell']=2; json.dump(c, open('quick2.json','w'))" "$src/configs/quick.json"

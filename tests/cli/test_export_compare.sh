@@ -5,16 +5,6 @@ set -u
 bin=$1
 src=$2
 source "$(dirname "$0")/lib.sh"
-check() {  # NAME COMMAND...
-  local name=$1
-  shift
-  if "$@" >out.txt 2>err.txt; then
-    ok "$name"
-  else
-    bad "$name (exit $?)"
-    cat out.txt err.txt | tail -20
-  fi
-}
 expect_exit() {  # NAME CODE COMMAND...
   local name=$1 code=$2
   shift 2

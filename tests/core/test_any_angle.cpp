@@ -469,12 +469,6 @@ int check_bound_below_optima(const std::string& dir, const std::vector<const cha
   return checked;
 }
 
-TEST(AnyAngle, MovingAiShippedOptimaAreNeverBelowTheBound) {
-  const int checked = check_bound_below_optima(testdata::shipped_maps() + "/",
-                                               {"random512-10-0.map", "maze512-1-0.map"});
-  EXPECT_EQ(checked, 2 * (16 + 2));  // the slices hold 16 and 2 queries of buckets 0-7
-}
-
 TEST(AnyAngle, FullSetsOptimaAreNeverBelowTheBound) {
   AGV_MOVINGAI_SETS_OR_SKIP(sets);
   const int checked = check_bound_below_optima(

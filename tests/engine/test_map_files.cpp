@@ -28,8 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string kShipped = testdata::shipped_maps();
-
 // A fresh folder under the system's temporary one, removed with the object.
 class TempDir {
  public:
@@ -182,12 +180,6 @@ void expect_scen_optima(const std::string& glob, int every, std::int64_t expecte
   EXPECT_EQ(report["config"]["references"], json({{"any_angle", false}}));
 }
 
-// Every 4th query of the shipped slices: 89 of random512's 356, 76 of the maze's 303. Under a
-// sanitizer (tests/test_size.h) every 16th: 23 and 19, the same reader and sweep on fewer maps.
-TEST(MapFiles, ScenQueriesOfTheShippedMapsMatchTheirOptimum) {
-  expect_scen_optima(kShipped + "/*.map", test::sized(4, 16), test::sized(89 + 76, 23 + 19));
-}
-
 // The acceptance check of issue 16: every 20th .scen query of every map of the full sets (942 of
 // 18,820).
 TEST(MapFiles, FullSetsScenQueriesMatchTheirOptimum) {
@@ -197,16 +189,17 @@ TEST(MapFiles, FullSetsScenQueriesMatchTheirOptimum) {
 
 // A scenario optimum assumes MovingAI's convention; under another collision model scen_ratio is
 // not defined (and a bucket range selects only its queries).
-TEST(MapFiles, ScenRatioOnlyUnderTheScenariosConvention) {
+TEST(MapFiles, FullSetsScenRatioOnlyUnderTheScenariosConvention) {
+  AGV_MOVINGAI_SETS_OR_SKIP(sets);
   json j = {{"generators",
              {{{"name", "movingai"},
                {"params",
-                {{"files", {kShipped + "/random512-10-0.map"}},
+                {{"files", {sets + "/random512-10-0.map"}},
                  {"queries", "scen"},
                  {"scen_buckets", {3, 4}}}}}}},
             {"planners", {"astar"}},
             {"report", "unused.json"}};
-  const auto queries = read_scen(kShipped + "/random512-10-0.map.scen");
+  const auto queries = read_scen(sets + "/random512-10-0.map.scen");
   std::size_t in_range = 0;
   for (const auto& q : queries) in_range += q.bucket >= 3 && q.bucket <= 4;
   ASSERT_GT(in_range, 0u);
@@ -303,18 +296,22 @@ TEST(MapFiles, FileMapSweepIsIdenticalOnOneAndTwoThreads) {
   TempDir dir;
   const auto greys = random_greys(31, 29, 77);
   write_pgm(dir / "a.pgm", greys, 31, 29, false);
-  const json j = {
-      {"name", "files"},
-      {"seed", 4},
-      {"generators",
-       {"uniform",
-        {{"name", "movingai"}, {"params", {{"files", {kShipped + "/random512-10-0.map"}}}}},
-        {{"name", "image"}, {"params", {{"files", {"a.pgm"}}}}}}},
-      {"sizes", {16}},
-      {"maps_per_cell", 6},
-      {"map", {{"endpoints", "random"}, {"min_distance", 10}}},
-      {"planners", {"astar", "ma_star", "rrt"}},
-      {"report", "unused.json"}};
+  Rng rng(78, 78);
+  Grid random_map(97, 83);
+  for (int y = 0; y < random_map.height(); ++y)
+    for (int x = 0; x < random_map.width(); ++x) random_map.set_blocked(x, y, rng.chance(0.1));
+  write_map_file(random_map, dir / "r.map");
+  const json j = {{"name", "files"},
+                  {"seed", 4},
+                  {"generators",
+                   {"uniform",
+                    {{"name", "movingai"}, {"params", {{"files", {"r.map"}}}}},
+                    {{"name", "image"}, {"params", {{"files", {"a.pgm"}}}}}}},
+                  {"sizes", {16}},
+                  {"maps_per_cell", 6},
+                  {"map", {{"endpoints", "random"}, {"min_distance", 10}}},
+                  {"planners", {"astar", "ma_star", "rrt"}},
+                  {"report", "unused.json"}};
   const SweepConfig config = parse_config(j, dir.path());
   std::string text[2];
   for (int threads : {1, 2}) {
@@ -326,7 +323,7 @@ TEST(MapFiles, FileMapSweepIsIdenticalOnOneAndTwoThreads) {
     text[threads - 1] = deterministic_part(build_report(config, r)).dump(1);
   }
   EXPECT_EQ(text[0], text[1]);
-  EXPECT_NE(text[0].find("\"movingai/random512-10-0.map\""), std::string::npos);
+  EXPECT_NE(text[0].find("\"movingai/r.map\""), std::string::npos);
   EXPECT_NE(text[0].find("\"image/a.pgm\""), std::string::npos);
 }
 

@@ -328,11 +328,23 @@ TEST(Config, HashIgnoresGeneratorsTheSweepDoesNotUse) {
   EXPECT_NE(config_hash(parse_config(spelled)), before);
 }
 
+// configs/movingai.json reads the MovingAI sets where the project's checkouts have them,
+// ../shared/maps beside the checkout: it is loaded by the test below, which needs them there.
 TEST(Config, ShippedConfigsParse) {
   for (const auto& entry : fs::directory_iterator(std::string(AGV_SOURCE_DIR) + "/configs")) {
-    if (entry.path().extension() != ".json") continue;
+    if (entry.path().extension() != ".json" || entry.path().filename() == "movingai.json") continue;
     EXPECT_NO_THROW(load_config(entry.path().string())) << entry.path();
   }
+}
+
+TEST(Config, FullSetsMovingAiConfigParses) {
+  const fs::path sets = fs::path(AGV_SOURCE_DIR) / ".." / "shared" / "maps";
+  if (!fs::is_directory(sets))
+    GTEST_SKIP() << "configs/movingai.json needs the MovingAI sets in ../shared/maps";
+  const SweepConfig config = load_config(std::string(AGV_SOURCE_DIR) + "/configs/movingai.json");
+  const SweepPlan plan = plan_sweep(config);
+  EXPECT_EQ(plan.cells.size(), 5u);  // the five maps of ../shared/maps
+  for (const auto& cell : plan.cells) EXPECT_NE(cell.file, nullptr) << cell.key;
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
-// MovingAI .map / .scen reading and writing: the shipped benchmark maps (and the full sets where
-// present), round trips, and a table of malformed inputs whose messages must name the line.
+// MovingAI .map / .scen reading and writing: the benchmark sets where present, round trips, and a
+// table of malformed inputs whose messages must name the line.
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -24,11 +26,7 @@ struct SharedMap {
   int height;
   std::size_t scenarios;
 };
-// The slices of tests/data/movingai (README there) and the five maps of the full sets we test on.
-constexpr SharedMap kShippedMaps[] = {
-    {"random512-10-0.map", 512, 512, 356},
-    {"maze512-1-0.map", 512, 512, 303},
-};
+// The five maps of the full sets we test on.
 constexpr SharedMap kSharedMaps[] = {
     {"arena2.map", 281, 209, 910},        {"random512-10-0.map", 512, 512, 1780},
     {"maze512-1-0.map", 512, 512, 12120}, {"8room_000.map", 512, 512, 2140},
@@ -74,18 +72,14 @@ void expect_reads(const std::string& dir, const SharedMap& m) {
   }
 }
 
-TEST(MovingAi, ReadsTheShippedMapsAndScenarios) {
-  for (const SharedMap& m : kShippedMaps) expect_reads(testdata::shipped_maps(), m);
-}
-
 TEST(MovingAi, FullSetsReadWithTheirScenarios) {
   AGV_MOVINGAI_SETS_OR_SKIP(sets);
   for (const SharedMap& m : kSharedMaps) expect_reads(sets, m);
 }
 
-TEST(MovingAi, ScenarioFieldsAndLineNumbers) {
-  const std::vector<ScenarioQuery> q =
-      read_scen(testdata::shipped_maps() + "/random512-10-0.map.scen");
+TEST(MovingAi, FullSetsScenarioFieldsAndLineNumbers) {
+  AGV_MOVINGAI_SETS_OR_SKIP(sets);
+  const std::vector<ScenarioQuery> q = read_scen(sets + "/random512-10-0.map.scen");
   ASSERT_FALSE(q.empty());
   EXPECT_EQ(q[0].bucket, 0);
   EXPECT_EQ(q[0].map_width, 512);
@@ -108,19 +102,48 @@ std::string to_crlf(const std::string& lf) {
   return crlf;
 }
 
-// Windows line endings, made from a shipped file: the map and its scenarios read as from LF.
+Grid random_grid(int width, int height, double density, Rng& rng) {
+  Grid g(width, height);
+  for (int y = 0; y < g.height(); ++y)
+    for (int x = 0; x < g.width(); ++x) g.set_blocked(x, y, rng.chance(density));
+  return g;
+}
+
+// A scenario file for `g` named `map` in MovingAI's layout: random endpoints, each length the
+// straight line's times 1.25 with 8 decimals (the reader checks no more than that bound).
+std::string random_scen_text(const Grid& g, const std::string& map, int queries, Rng& rng) {
+  std::string text = "version 1\n";
+  for (int i = 0; i < queries; ++i) {
+    const Cell s{rng.between(0, g.width() - 1), rng.between(0, g.height() - 1)};
+    const Cell t{rng.between(0, g.width() - 1), rng.between(0, g.height() - 1)};
+    char line[160];
+    std::snprintf(line, sizeof line, "%d\t%s\t%d\t%d\t%d\t%d\t%d\t%d\t%.8f\n", i / 4, map.c_str(),
+                  g.width(), g.height(), s.x, s.y, t.x, t.y,
+                  1.25 * std::hypot(s.x - t.x, s.y - t.y));
+    text += line;
+  }
+  return text;
+}
+
+// Windows line endings: a map and its scenarios read as from LF.
 TEST(MovingAi, CrlfParsesLikeLf) {
-  const std::string path = testdata::shipped_maps() + "/random512-10-0.map";
-  const std::string lf = file_text(path);
+  Rng rng(10, 10);
+  const Grid g = random_grid(53, 41, 0.25, rng);
+  std::ostringstream map;
+  write_map(g, map);
+  const std::string lf = map.str();
   ASSERT_EQ(lf.find('\r'), std::string::npos);
-  EXPECT_TRUE(parse_map_text(to_crlf(lf)).same_cells(read_map(path)));
-  const auto from_crlf = parse_scen_text(to_crlf(file_text(path + ".scen")));
-  const auto from_lf = read_scen(path + ".scen");
+  EXPECT_TRUE(parse_map_text(to_crlf(lf)).same_cells(g));
+  const std::string scen = random_scen_text(g, "crlf.map", 40, rng);
+  const auto from_crlf = parse_scen_text(to_crlf(scen));
+  const auto from_lf = parse_scen_text(scen);
+  ASSERT_EQ(from_lf.size(), 40u);
   ASSERT_EQ(from_crlf.size(), from_lf.size());
   for (std::size_t i = 0; i < from_lf.size(); ++i) {
     EXPECT_EQ(from_crlf[i].map, from_lf[i].map);
     EXPECT_EQ(from_crlf[i].start, from_lf[i].start);
     EXPECT_EQ(from_crlf[i].goal, from_lf[i].goal);
+    EXPECT_EQ(from_crlf[i].line, from_lf[i].line);
     EXPECT_DOUBLE_EQ(from_crlf[i].optimal_length, from_lf[i].optimal_length);
   }
 }
@@ -141,19 +164,16 @@ TEST(MovingAi, FullSetsBerlinHasCrlfAndParsesLikeLf) {
 TEST(MovingAi, WriteThenReadIsIdentical) {
   Rng rng(8, 8);
   for (int trial = 0; trial < 20; ++trial) {
-    Grid g(rng.between(1, 70), rng.between(1, 70));
-    for (int y = 0; y < g.height(); ++y) {
-      for (int x = 0; x < g.width(); ++x) g.set_blocked(x, y, rng.chance(0.3));
-    }
+    const Grid g = random_grid(rng.between(1, 70), rng.between(1, 70), 0.3, rng);
     std::ostringstream out;
     write_map(g, out);
     EXPECT_TRUE(parse_map_text(out.str()).same_cells(g));
   }
-  // Through a file, starting from a shipped benchmark map.
-  const Grid maze = read_map(testdata::shipped_maps() + "/maze512-1-0.map");
+  // Through a file, at a benchmark map's size.
+  const Grid big = random_grid(512, 512, 0.1, rng);
   const std::string tmp = testing::TempDir() + "/agv_roundtrip.map";
-  write_map_file(maze, tmp);
-  EXPECT_TRUE(read_map(tmp).same_cells(maze));
+  write_map_file(big, tmp);
+  EXPECT_TRUE(read_map(tmp).same_cells(big));
   std::filesystem::remove(tmp);
 }
 

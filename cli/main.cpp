@@ -9,6 +9,7 @@
 #include "cli/command.h"
 #include "core/input_error.h"
 #include "core/printable.h"
+#include "core/simd_path.h"
 #include "engine/plan/plugins.h"
 #include "engine/system/environment.h"
 
@@ -20,6 +21,7 @@ constexpr std::size_t kMessageBytes = 2000;
 
 // The one subcommand the command line chose (CLI11 requires exactly one).
 int run_chosen(const std::vector<agv::Command>& commands, const std::vector<std::string>& plugins) {
+  agv::active_simd_path();  // a bad AGVBENCH_SIMD is bad input, named before anything runs
   for (const auto& path : plugins) agv::load_plugin(path, "--plugin");
   for (const auto& c : commands)
     if (*c.sub) return c.run();

@@ -10,8 +10,10 @@
 // - the walk's columns go in growing blocks, each screened first by one masked word test per
 //   grid row over a box that holds every cell the walk could touch there (64 cells a test); only
 //   a block whose box holds an obstacle is walked exactly, column by column, as the reference
-//   walks it. No vector-ISA code: the same kernel runs on every x86-64 CPU. (8-wide GCC vector
-//   lanes with gathers ran 0.1-0.25x the reference on AVX2 and lost at some cases on AVX-512.)
+//   walks it. No hand-written vector code (8-wide GCC vector lanes with gathers ran 0.1-0.25x
+//   the reference on AVX2 and lost at some cases on AVX-512); the kernel is compiled once per
+//   instruction-set level (core/line_of_sight_kernel.cpp, core/simd_path.h) and the process
+//   runs the best its CPU has, so a portable build runs as fast as a native one.
 // The clearance test (obstacle circles) takes each grid row's candidate cells as one masked
 // word and computes the reference's exact squared distance only for the blocked bits among them.
 //

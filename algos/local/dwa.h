@@ -5,7 +5,8 @@
 //      of maximum acceleration reaches from the current (v, w);
 //   2. n_v x n_w velocity pairs sampled on a regular grid over that window (endpoints included);
 //   3. each pair rolled out for the predict time T at the control period dt, all pairs at once
-//      (Eigen arrays over the samples, one time step after another) against the static grid,
+//      (lanes over the samples, one time step after another; algos/local/dwa_rollout.h, compiled
+//      for each instruction-set level) against the static grid,
 //      the unknown static cells seen so far and the moving obstacles at their current positions;
 //   4. V_a (eq. 10): a pair is admissible when it can stop before the first point of its
 //      rollout that comes closer than robot_radius + safety_margin to any obstacle:

@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+#include "core/simd_path.h"
 #include "engine/build_info.h"
 #include "engine/git_revision.h"
 
@@ -73,6 +74,7 @@ nlohmann::json environment_json(int threads) {
           {"build", kBuildFlags},
           {"git_revision", kGitRevision},
           {"cpu_model", cpu_model()},
+          {"simd", std::string(simd_path_name(active_simd_path()))},
           {"hardware_threads", std::thread::hardware_concurrency()},
           {"threads", threads},
           {"host", host_name()},

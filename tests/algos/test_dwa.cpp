@@ -16,7 +16,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -28,6 +30,7 @@
 #include <vector>
 
 #include "algos/local/dwa.h"
+#include "algos/local/dwa_rollout.h"
 #include "algos/local/dwa_world.h"
 #include "algos/local/fusion.h"
 #include "algos/local/unicycle.h"
@@ -133,6 +136,63 @@ TEST(DynamicWindow, NeverLeavesLimitsOrReach) {
     }
   }
   EXPECT_EQ(checked, 500);
+}
+
+// The rollouts of every instruction-set level this CPU runs (algos/local/dwa_rollout.h) give the
+// baseline's values bit for bit, with unknown cells, moving discs and several local goals.
+TEST(DwaLevels, RolloutsAreTheSameAtEveryLevel) {
+  const DwaRolloutKernel& baseline = *dwa_rollout_kernel(SimdPath::baseline);
+  DwaParams p;
+  p.v_samples = 7;  // 7 x 13 = 91 lanes: vector bodies and remainders at every width
+  p.w_samples = 13;
+  const StepShape shape{p.v_samples, p.w_samples, p.v_samples * p.w_samples,
+                        static_cast<int>(std::lround(p.predict_time / p.dt))};
+  int compared = 0;
+  for (int m = 0; m < 12; ++m) {
+    const MapInstance map = random_map(0.1 + 0.05 * (m % 4), m, 24);
+    Rng rng(11, m);
+    for (int k = 0; k < 10; ++k) {
+      const State st = random_state(map.grid, rng);
+      std::vector<Cell> unknown;
+      std::vector<Disc> moving;
+      for (int i = 0; i < k % 4; ++i) {
+        unknown.push_back({rng.between(0, 23), rng.between(0, 23)});
+        moving.push_back({{rng.uniform(0.0, 24.0), rng.uniform(0.0, 24.0)},
+                          rng.uniform(0.2, 0.8),
+                          {rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)}});
+      }
+      const std::vector<Point> goals = {st.goal, {rng.uniform(0.0, 24.0), rng.uniform(0.0, 24.0)}};
+      DwaTarget target;
+      target.goals = goals;
+      target.from = position(st.pose);
+      const DwaView view{map.grid, unknown, moving};
+      DwaScratch ref;
+      // dwa_step samples the pairs and sizes the scratch; the rollouts are then redone per level.
+      dwa_step(p, st.pose, st.v, st.w, target, view, ref);
+      ASSERT_EQ(ref.v.size(), static_cast<Eigen::Index>(shape.n));
+      ASSERT_TRUE(baseline.roll_out(p, st.pose, shape, target, view, ref, nullptr));
+      for (SimdPath path : kSimdPaths) {
+        const DwaRolloutKernel* level = dwa_rollout_kernel(path);
+        if (level == nullptr) continue;
+        DwaScratch s = ref;
+        ASSERT_TRUE(level->roll_out(p, st.pose, shape, target, view, s, nullptr));
+        for (const auto field :
+             {&DwaScratch::px, &DwaScratch::py, &DwaScratch::min_static, &DwaScratch::min_other,
+              &DwaScratch::hit_static, &DwaScratch::hit_other, &DwaScratch::goal_index})
+          for (int i = 0; i < shape.n; ++i)
+            ASSERT_EQ(std::bit_cast<std::uint64_t>((s.*field)[i]),
+                      std::bit_cast<std::uint64_t>((ref.*field)[i]))
+                << simd_path_name(path) << " map " << m << " state " << k << " lane " << i;
+        for (int i = 0; i < 50; ++i) {
+          const double x = rng.uniform(-1.0, 25.0), y = rng.uniform(-1.0, 25.0);
+          ASSERT_EQ(std::bit_cast<std::uint64_t>(level->capped_static_sq(map.grid, x, y)),
+                    std::bit_cast<std::uint64_t>(baseline.capped_static_sq(map.grid, x, y)));
+        }
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GE(compared, 120);  // the baseline against itself at least, on every state
 }
 
 TEST(DynamicWindow, ChosenVelocityCanStopBeforeItsFirstObstacle) {

@@ -1,5 +1,6 @@
-// The word-parallel line of sight (core/line_of_sight_batch.h) against the reference walk
-// (segment_free_reference): the same verdict on every segment, for every corner rule and
+// The word-parallel line of sight (core/line_of_sight_batch.h), at every instruction-set level
+// this machine runs (core/simd_path.h), against the reference walk (segment_free_reference): the
+// same verdict on every segment, for every corner rule and
 // clearance radius, over grids of many sizes (widths across the 64-bit word boundaries) and
 // densities, with endpoints on vertices, grid lines, half and quarter cells, just off integers
 // (either side of the snapping tolerance) and anywhere.
@@ -16,6 +17,8 @@
 #include "core/grid.h"
 #include "core/line_of_sight.h"
 #include "core/line_of_sight_batch.h"
+#include "core/line_of_sight_kernel.h"
+#include "core/simd_path.h"
 
 namespace agv {
 namespace {
@@ -121,7 +124,25 @@ constexpr Size kSizes[] = {{1, 1},     {2, 3},    {7, 5},     {20, 20}, {31, 9},
                            {129, 129}, {191, 12}, {200, 200}, {300, 50}};
 constexpr double kDensities[] = {0.0, 0.05, 0.2, 0.35, 0.5, 0.8};
 
-TEST(LosSimd, RandomSegmentsAgreeWithReference) {
+// Every level of the kernel this build has and this CPU runs (core/simd_path.h), each called
+// directly: the comparisons hold for each one, whichever the process would pick.
+class LosSimd : public ::testing::TestWithParam<SimdPath> {
+ protected:
+  const SightKernel& kernel() const { return *sight_kernel(GetParam()); }
+};
+
+std::vector<SimdPath> supported_levels() {
+  std::vector<SimdPath> levels;
+  for (SimdPath path : kSimdPaths)
+    if (simd_path_supported(path)) levels.push_back(path);
+  return levels;
+}
+
+std::string level_name(const ::testing::TestParamInfo<SimdPath>& info) {
+  return std::string(simd_path_name(info.param));
+}
+
+TEST_P(LosSimd, RandomSegmentsAgreeWithReference) {
   Generator gen(20240613);
   const std::vector<SightRule> rules = all_rules();
   constexpr int kSegments = 200000;  // x 18 rules x 4 forms: 14.4 million verdicts compared
@@ -142,8 +163,8 @@ TEST(LosSimd, RandomSegmentsAgreeWithReference) {
     out.assign(as.size(), 2);
     out_from.assign(as.size(), 2);
     for (const SightRule& rule : rules) {
-      segments_free(g, as, bs, rule, out);
-      segments_free_from(g, as[0], bs, rule, out_from);
+      kernel().segments(g, as, bs, rule, out);
+      kernel().segments_from(g, as[0], bs, rule, out_from);
       for (std::size_t s = 0; s < as.size(); ++s) {
         const bool expected = segment_free_reference(g, as[s], bs[s], rule);
         const auto where = [&] {
@@ -152,8 +173,8 @@ TEST(LosSimd, RandomSegmentsAgreeWithReference) {
                         size.h, m, as[s].x, as[s].y, bs[s].x, bs[s].y);
           return std::string(buf) + describe(rule);
         };
-        ASSERT_EQ(segment_free(g, as[s], bs[s], rule), expected) << where();
-        ASSERT_EQ(segment_free(g, bs[s], as[s], rule), expected) << where() << " reversed";
+        ASSERT_EQ(kernel().segment(g, as[s], bs[s], rule), expected) << where();
+        ASSERT_EQ(kernel().segment(g, bs[s], as[s], rule), expected) << where() << " reversed";
         ASSERT_EQ(out[s] == 1, expected) << where() << " batched";
         ASSERT_EQ(out_from[s] == 1, segment_free_reference(g, as[0], bs[s], rule))
             << where() << " from as[0]";
@@ -167,7 +188,7 @@ TEST(LosSimd, RandomSegmentsAgreeWithReference) {
   EXPECT_LT(free_count, checks * 9 / 10);
 }
 
-TEST(LosSimd, PointsAgreeWithReference) {
+TEST_P(LosSimd, PointsAgreeWithReference) {
   Generator gen(7);
   const std::vector<SightRule> rules = all_rules();
   for (int m = 0; m < 40; ++m) {
@@ -177,7 +198,7 @@ TEST(LosSimd, PointsAgreeWithReference) {
     for (int s = 0; s < 500; ++s) ps.push_back(gen.point(g));
     std::vector<std::uint8_t> out(ps.size(), 2);
     for (const SightRule& rule : rules) {
-      points_free(g, ps, rule, out);
+      kernel().points(g, ps, rule, out);
       for (std::size_t s = 0; s < ps.size(); ++s)
         ASSERT_EQ(out[s] == 1, segment_free_reference(g, ps[s], ps[s], rule))
             << ps[s].x << "," << ps[s].y << " " << describe(rule);
@@ -189,7 +210,7 @@ TEST(LosSimd, PointsAgreeWithReference) {
 // of a cell edge or vertex, where the reference may leave the cell to the corner rule (an endpoint
 // snapped onto a vertex pass: (85 - 1e-10, 1 - 2e-9) to (84.22, 2.84) is free under `allow` with
 // only cell (84, 0) blocked, found by RandomSegmentsAgreeWithReference).
-TEST(LosSimd, EndpointsInBlockedCellsNearEdgesAndVertices) {
+TEST_P(LosSimd, EndpointsInBlockedCellsNearEdgesAndVertices) {
   Grid g(100, 7);
   for (const Cell c : {Cell{84, 0}, Cell{86, 1}, Cell{84, 2}, Cell{10, 3}})
     g.set_blocked(c.x, c.y, true);
@@ -201,9 +222,9 @@ TEST(LosSimd, EndpointsInBlockedCellsNearEdgesAndVertices) {
                             Point{85.5, 6.5}, Point{90.0, 1.0}, Point{85.0, 1.0}}) {
         const Point a{85.0 + ox, 1.0 + oy};
         for (const SightRule& rule : rules) {
-          ASSERT_EQ(segment_free(g, a, b, rule), segment_free_reference(g, a, b, rule))
+          ASSERT_EQ(kernel().segment(g, a, b, rule), segment_free_reference(g, a, b, rule))
               << a.x << "," << a.y << " " << b.x << "," << b.y << " " << describe(rule);
-          ASSERT_EQ(segment_free(g, b, a, rule), segment_free_reference(g, b, a, rule))
+          ASSERT_EQ(kernel().segment(g, b, a, rule), segment_free_reference(g, b, a, rule))
               << b.x << "," << b.y << " " << a.x << "," << a.y << " " << describe(rule);
         }
       }
@@ -213,17 +234,17 @@ TEST(LosSimd, EndpointsInBlockedCellsNearEdgesAndVertices) {
   one.set_blocked(84, 0, true);
   const Point a{84.999999999899998, 0.99999999799999995};
   const Point b{84.221672676504625, 2.8423372574767178};
-  EXPECT_TRUE(segment_free(one, a, b, SightRule::cells(CornerRule::allow)));
-  EXPECT_FALSE(segment_free(one, a, b, SightRule::cells(CornerRule::no_corner_cut)));
+  EXPECT_TRUE(kernel().segment(one, a, b, SightRule::cells(CornerRule::allow)));
+  EXPECT_FALSE(kernel().segment(one, a, b, SightRule::cells(CornerRule::no_corner_cut)));
   for (const SightRule& rule : rules)
-    EXPECT_EQ(segment_free(one, a, b, rule), segment_free_reference(one, a, b, rule))
+    EXPECT_EQ(kernel().segment(one, a, b, rule), segment_free_reference(one, a, b, rule))
         << describe(rule);
 }
 
 // The clearance screens: one obstacle on open ground, segments passing it at every distance
 // around each radius, in every direction, so that a screen box one cell too small would call a
 // segment free that the scan finds too close.
-TEST(LosSimd, ClearanceScreensAroundOneObstacle) {
+TEST_P(LosSimd, ClearanceScreensAroundOneObstacle) {
   Generator gen(7);
   Grid g(120, 120);
   g.set_blocked(60, 60, true);
@@ -238,14 +259,14 @@ TEST(LosSimd, ClearanceScreensAroundOneObstacle) {
     const Point a{cx - length * std::cos(angle), cy - length * std::sin(angle)};
     const Point b{cx + length * std::cos(angle), cy + length * std::sin(angle)};
     for (const SightRule& rule : rules)
-      ASSERT_EQ(segment_free(g, a, b, rule), segment_free_reference(g, a, b, rule))
+      ASSERT_EQ(kernel().segment(g, a, b, rule), segment_free_reference(g, a, b, rule))
           << a.x << "," << a.y << " " << b.x << "," << b.y << " " << describe(rule);
   }
 }
 
 // Degenerate slopes: long, almost flat segments whose crossings snap onto a row line over many
 // columns, and exact vertex runs, across word boundaries.
-TEST(LosSimd, NearlyFlatAndVertexRuns) {
+TEST_P(LosSimd, NearlyFlatAndVertexRuns) {
   Generator gen(99);
   const std::vector<SightRule> rules = all_rules();
   for (int m = 0; m < 30; ++m) {
@@ -259,13 +280,43 @@ TEST(LosSimd, NearlyFlatAndVertexRuns) {
       const Point d{c.x + 110.0,
                     c.y + (gen.below(2) ? 1.0 : -1.0) * static_cast<double>(gen.below(3))};
       for (const SightRule& rule : rules) {
-        ASSERT_EQ(segment_free(g, a, b, rule), segment_free_reference(g, a, b, rule))
+        ASSERT_EQ(kernel().segment(g, a, b, rule), segment_free_reference(g, a, b, rule))
             << a.x << "," << a.y << " " << b.x << "," << b.y << " " << describe(rule);
-        ASSERT_EQ(segment_free(g, c, d, rule), segment_free_reference(g, c, d, rule))
+        ASSERT_EQ(kernel().segment(g, c, d, rule), segment_free_reference(g, c, d, rule))
             << c.x << "," << c.y << " " << d.x << "," << d.y << " " << describe(rule);
       }
     }
   }
+}
+
+INSTANTIATE_TEST_SUITE_P(Levels, LosSimd, ::testing::ValuesIn(supported_levels()), level_name);
+
+// The public checks run the active level and count one collision check per verdict.
+TEST(LosSimdDispatch, PublicChecksCountAndRunTheActiveLevel) {
+  EXPECT_TRUE(simd_path_supported(SimdPath::baseline));
+  EXPECT_TRUE(simd_path_supported(active_simd_path()));
+  EXPECT_EQ(&active_sight_kernel(), sight_kernel(active_simd_path()));
+  Generator gen(5);
+  const Grid g = gen.grid(90, 70, 0.2);
+  std::vector<Point> as, bs;
+  for (int s = 0; s < 300; ++s) {
+    as.push_back(gen.point(g));
+    bs.push_back(gen.partner(g, as.back()));
+  }
+  std::vector<std::uint8_t> out(as.size()), from(as.size()), points(as.size());
+  const SightRule rule = SightRule::circles(0.7);
+  const std::int64_t before = collision_checks_on_thread();
+  segments_free(g, as, bs, rule, out);
+  segments_free_from(g, as[0], bs, rule, from);
+  points_free(g, as, rule, points);
+  for (std::size_t s = 0; s < as.size(); ++s) {
+    EXPECT_EQ(segment_free(g, as[s], bs[s], rule), segment_free_reference(g, as[s], bs[s], rule));
+    EXPECT_EQ(out[s] == 1, segment_free_reference(g, as[s], bs[s], rule));
+    EXPECT_EQ(from[s] == 1, segment_free_reference(g, as[0], bs[s], rule));
+    EXPECT_EQ(points[s] == 1, segment_free_reference(g, as[s], as[s], rule));
+  }
+  // Per segment: three batched verdicts, one single, and the four reference walks (they count too).
+  EXPECT_EQ(collision_checks_on_thread() - before, 300 * (3 + 1 + 4));
 }
 
 }  // namespace

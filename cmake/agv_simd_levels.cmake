@@ -3,7 +3,8 @@
 # AGV_SIMD_LEVEL names, with the level's features applied through core/simd_target.h), and
 # defines AGV_SIMD_LEVELS_X86=1 on TARGET when the x86-64 levels are built, for the code that
 # picks a copy. LIBS give the copies their compile settings (flags, include folders); their
-# objects go into TARGET, which links what they need. core/simd_path.cpp checks the same features at run time: change both together.
+# objects go into TARGET, which links what they need. core/simd_path.cpp checks the same features
+# at run time: change both together.
 set(AGV_SIMD_TARGET_avx2 "sse3,ssse3,sse4.1,sse4.2,popcnt,avx,avx2,fma,bmi,bmi2")
 set(AGV_SIMD_TARGET_avx512 "${AGV_SIMD_TARGET_avx2},avx512f,avx512bw,avx512cd,avx512dq,avx512vl")
 if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")

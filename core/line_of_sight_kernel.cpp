@@ -7,6 +7,8 @@
 // value compared here is the reference walk's value, computed by the same expression. A level's
 // FMA unit changes nothing: no multiply-add is fused.
 
+#include "core/line_of_sight_kernel.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -14,7 +16,6 @@
 #include <iterator>
 
 #include "core/line_of_sight_internal.h"
-#include "core/line_of_sight_kernel.h"
 #include "core/simd_target.h"
 
 AGV_SIMD_TARGET_BEGIN

@@ -20,7 +20,9 @@ bool built(SimdPath path) {
 #endif
 }
 
-// Whether the CPU and OS run the level: every feature its target list enables (cmake/agv_simd_levels.cmake). __builtin_cpu_supports checks the OS saves the vector registers too.
+// Whether the CPU and OS run the level: every feature its target list enables
+// (cmake/agv_simd_levels.cmake). __builtin_cpu_supports checks the OS saves the vector registers
+// too.
 bool cpu_runs(SimdPath path) {
 #if AGV_SIMD_LEVELS_X86
   __builtin_cpu_init();

@@ -1,7 +1,8 @@
 #pragma once
-// Compiling one source once per instruction-set level (core/simd_path.h; cmake/agv_simd_levels.cmake
-// compiles each level's copy with AGV_SIMD_LEVEL, the namespace of the copy, and, but for the
-// baseline, AGV_SIMD_TARGET, its target-feature list). In a level source, after every #include:
+// Compiling one source once per instruction-set level (core/simd_path.h;
+// cmake/agv_simd_levels.cmake compiles each level's copy with AGV_SIMD_LEVEL, the namespace of the
+// copy, and, but for the baseline, AGV_SIMD_TARGET, its target-feature list). In a level source,
+// after every #include:
 //
 //   AGV_SIMD_TARGET_BEGIN
 //   namespace agv::foo_levels::AGV_SIMD_LEVEL { ... }
@@ -17,7 +18,8 @@
 #define AGV_SIMD_PRAGMA(x) _Pragma(AGV_SIMD_STR(x))
 #if defined(__clang__)
 #define AGV_SIMD_TARGET_BEGIN \
-  AGV_SIMD_PRAGMA(clang attribute push(__attribute__((target(AGV_SIMD_TARGET))), apply_to = function))
+  AGV_SIMD_PRAGMA(            \
+      clang attribute push(__attribute__((target(AGV_SIMD_TARGET))), apply_to = function))
 #define AGV_SIMD_TARGET_END AGV_SIMD_PRAGMA(clang attribute pop)
 #else
 #define AGV_SIMD_TARGET_BEGIN \

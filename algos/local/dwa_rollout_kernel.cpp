@@ -11,8 +11,8 @@
 #include "algos/local/dwa.h"
 #include "algos/local/dwa_rollout.h"
 #include "algos/planner.h"
-#include "core/grid.h"
 #include "core/cell_blocks.h"
+#include "core/grid.h"
 #include "core/line_of_sight.h"
 #include "core/numbers.h"
 #include "core/simd_target.h"
@@ -214,7 +214,8 @@ bool roll_out(const DwaParams& p, const Pose& pose, const StepShape& shape, cons
       }
     }
     for (int i = 0; i < n; ++i) {
-      hit_other[i] = ((step_other[i] < threshold_other) & (hit_other[i] > steps)) ? kk : hit_other[i];
+      hit_other[i] =
+          ((step_other[i] < threshold_other) & (hit_other[i] > steps)) ? kk : hit_other[i];
       min_other[i] = std::min(min_other[i], step_other[i]);
     }
     for (int j = 0; j < goal_count; ++j) {

@@ -82,8 +82,8 @@ for part in "${parts[@]}"; do
       # Left to the plain suite: tests labelled `long`, and by default (ASAN_CTEST_EXCLUDE
       # overrides) the few whose inputs are big, not their code: the MovingAI scenario suites
       # and every GoogleTest of the MovingAI sets (Suite.FullSets*: whole 512x512 benchmark maps;
-      # the readers' own small maps and cli_scen_commands_FullSets' 90 queries run here), the fusion planner on random maps (9 min), HMA* on
-      # the papers' maps (3 min), the any-angle bound over 1,080 maps and every planner, and the
+      # the readers' own small maps and cli_scen_commands_FullSets' 90 queries run here), the
+      # fusion planner on random maps (9 min), HMA* on the papers' maps (3 min), the any-angle bound over 1,080 maps and every planner, and the
       # 1-vs-2-thread sweep of the whole default planner set (killed at 464 s on 2 cores; that
       # determinism runs in the plain suite, and the sweep suite runs under TSan below); and,
       # measured at 100-250 s each under ASan on 2 cores (2026-12-02), the fusion planners' three

@@ -12,7 +12,9 @@ fail=0
 checked=0
 
 code() {  # OBJECT SYMBOL: its instructions, without addresses, bytes and <symbol+offset> notes
-  objdump -d --no-show-raw-insn --disassemble="$2" "$1" | sed -n '/>:$/,$p' | tail -n +2 |
+  # The body alone: from its label to the first blank line (objdump then names every other
+  # section of the object, whose names differ between the levels' namespaces).
+  objdump -d --no-show-raw-insn --disassemble="$2" "$1" | sed -n '/>:$/,/^$/p' | tail -n +2 |
     sed -e 's/^ *[0-9a-f]*:\s*//' -e 's/ *<[^>]*>//g' -e 's/ *#.*$//'
 }
 

@@ -5,10 +5,12 @@ Times agvbench's A* (`agvbench scen MAP SCEN --planner astar --param heuristic=o
 plain binary-heap A* of perf/peers/plain_astar.cpp and, when given, warthog-core's A*
 (`warthog --alg astar`, built from its public source outside this project; perf/README.md says
 how) on every query of each MovingAI map's scenario file: the octile heuristic, 8-connected,
-no corner cutting (MovingAI's and GPPC's rules). Per map and tool: ROUNDS runs, the median of
-(a) whole-process CPU less start-up (the same tool on the scenario's first query alone, a
-search of a few cells: map loading and set-up; warthog refuses an empty scenario) and (b) the tool's own timer over its searches. Then ours / theirs per map and the
-geometric mean over the maps. Every tool's lengths are checked against the scenario optima
+no corner cutting (MovingAI's and GPPC's rules). Per map: ROUNDS rounds, each running every
+tool once (interleaved, so a slow spell of a shared machine falls on all of them); per tool the
+median of (a) whole-process CPU less start-up (the same tool on the scenario's first query
+alone, a search of a few cells: map loading and set-up; warthog refuses an empty scenario) and
+(b) the tool's own timer over its searches. Then ours / theirs per map and the geometric mean
+over the maps. Every tool's lengths are checked against the scenario optima
 (relative 1e-5): a run that disagrees fails the script.
 
 Usage: astar_side_by_side.py [--maps DIR] [--only MAP...] [--rounds N] [--agvbench BIN]
@@ -78,16 +80,24 @@ def first_query(scen, tmp):
     return path
 
 
-def measure(tool, bin_, map_, scen, empty, rounds):
-    startup = statistics.median(tool(bin_, map_, empty)[0] for _ in range(rounds))
-    cpus, owns = [], []
+def measure(tools, map_, scen, empty, rounds):
+    """Per tool: (median CPU less the median start-up, median own time, queries). Each round
+    runs every tool once, start-up run then the whole scenario, so that a slow spell of a shared
+    machine falls on all the tools alike instead of on one tool's rounds."""
+    startup = {n: [] for n, _, _ in tools}
+    cpus = {n: [] for n, _, _ in tools}
+    owns = {n: [] for n, _, _ in tools}
+    queries = {}
     for _ in range(rounds):
-        cpu, own, queries, mismatches = tool(bin_, map_, scen)
-        if mismatches:
-            raise RuntimeError(f"{tool.__name__}: {mismatches} of {queries} lengths differ from the optima of {scen}")
-        cpus.append(cpu - startup)
-        owns.append(own)
-    return statistics.median(cpus), statistics.median(owns), queries
+        for n, tool, bin_ in tools:
+            startup[n].append(tool(bin_, map_, empty)[0])
+            cpu, own, queries[n], mismatches = tool(bin_, map_, scen)
+            if mismatches:
+                raise RuntimeError(f"{n}: {mismatches} of {queries[n]} lengths differ from the optima of {scen}")
+            cpus[n].append(cpu)
+            owns[n].append(own)
+    med = statistics.median
+    return {n: (med(cpus[n]) - med(startup[n]), med(owns[n]), queries[n]) for n, _, _ in tools}
 
 
 def default_maps():
@@ -119,7 +129,7 @@ def main():
         if not os.access(bin_, os.X_OK):
             sys.exit(f"astar_side_by_side: {name}: no program at {bin_}")
     ratios = {(o, k): [] for o, _, _ in tools[1:] for k in ("cpu", "own")}
-    print(f"{args.rounds} rounds a map and tool, medians; CPU less start-up / own timer, seconds\n")
+    print(f"{args.rounds} rounds a map, each running every tool once; medians; CPU less start-up / own timer, seconds\n")
     print("| map | queries | " + " | ".join(f"{n} CPU | {n} own" for n, _, _ in tools) + " | " +
           " | ".join(f"ours/{n} CPU | ours/{n} own" for n, _, _ in tools[1:]) + " |")
     print("| --- | ---: |" + " ---: | ---: |" * (len(tools) + len(tools) - 1))
@@ -127,7 +137,7 @@ def main():
         for m in maps:
             map_, scen = os.path.join(args.maps, m), os.path.join(args.maps, m + ".scen")
             empty = first_query(scen, tmp)
-            got = {n: measure(t, b, map_, scen, empty, args.rounds) for n, t, b in tools}
+            got = measure(tools, map_, scen, empty, args.rounds)
             cells = [f"{got[n][0]:.3f} | {got[n][1]:.3f}" for n, _, _ in tools]
             for n, _, _ in tools[1:]:
                 rc, ro = got["agvbench"][0] / got[n][0], got["agvbench"][1] / got[n][1]

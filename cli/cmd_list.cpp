@@ -10,6 +10,7 @@
 #include "cli/command.h"
 #include "core/input_error.h"
 #include "core/json_text.h"
+#include "engine/plan/catalogue.h"
 #include "engine/plan/plugins.h"
 #include "generators/map_files.h"
 #include "generators/registry.h"
@@ -86,15 +87,8 @@ nlohmann::json selected(const nlohmann::json& entries, const Selection& s) {
 int command_list(const ListOptions& options) {
   const Selection only = select(options.names);
   if (options.json) {
-    nlohmann::json sources = nlohmann::json::array();
-    for (const auto& info : map_source_registry()) {
-      nlohmann::json params = nlohmann::json::object();
-      for (const auto& [name, doc] : info.params) params[name] = doc;
-      sources.push_back({{"name", info.name}, {"summary", info.summary}, {"params", params}});
-    }
-    nlohmann::json doc = {{"planners", selected(registry_json(), only)},
-                          {"generators", selected(generator_registry_json(), only)},
-                          {"map_sources", selected(sources, only)}};
+    nlohmann::json doc = catalogue_json();
+    for (auto& [key, entries] : doc.items()) entries = selected(entries, only);
     // Only when plugins are loaded (--plugin), so the plain listing keeps its shape.
     if (const auto plugins = loaded_plugins(); !plugins.empty()) {
       doc["plugins"] = nlohmann::json::array();

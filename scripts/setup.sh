@@ -11,10 +11,12 @@ cd "$(dirname "$0")/.."
 build_packages=(g++ cmake ninja-build pkg-config git python3
   libeigen3-dev libtbb-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev
   libcli11-dev libpcg-cpp-dev libboost-dev libnanoflann-dev
-  libsqlite3-dev libssl-dev libompl-dev libyaml-cpp-dev libpng-dev zlib1g-dev)
-# What only the tests and report scripts run (plots, the HTML report in Chromium, sqlite3):
+  libsqlite3-dev libssl-dev libompl-dev libyaml-cpp-dev libpng-dev zlib1g-dev
+  pybind11-dev pybind11-json-dev python3-dev python3-numpy)
+# What only the tests and report scripts run (plots, the HTML report in Chromium, sqlite3, the
+# Python module's pytest suite and its DataFrames):
 # installed while the build compiles, which has no use for them.
-run_packages=(python3-matplotlib python3-plotly chromium sqlite3)
+run_packages=(python3-matplotlib python3-plotly chromium sqlite3 python3-pandas python3-pytest)
 scripts/apt_need.sh "${build_packages[@]}"
 
 apt_log=$(mktemp)

@@ -123,6 +123,8 @@ class JournalRecordReader {
   bool next(DecodedRecord& record, std::string& where);
   // torn_lines (once next() returned false) and has_header; records and duplicates stay 0.
   const JournalStats& stats() const { return stats_; }
+  // The current segment's header (nullptr before the first, and for version 1 records).
+  const JournalHeader* header() const { return decoder_.header(); }
 
  private:
   std::string path_;

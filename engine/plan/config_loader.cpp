@@ -78,53 +78,6 @@ void refuse_moved_shape_params(const json& j) {
   }
 }
 
-// "collision": {"corner_rule": ..., "clearance": ...}; absent = the default model.
-CollisionModel parse_collision(const json& j) {
-  ObjectReader r(j, "collision.");
-  CollisionModel model;
-  model.corner_rule =
-      *corner_rule_from_string(r.choice("corner_rule", std::string(to_string(model.corner_rule)),
-                                        {"allow", "no_squeeze", "no_corner_cut"}));
-  model.clearance = r.number("clearance", 0.0, -1e300, 1e300);
-  check_model_clearance(model, "collision.clearance");
-  r.finish();
-  return model;
-}
-
-void parse_map_options(const json& j, MapSpec& map) {
-  ObjectReader r(j, "map.");
-  if (j.is_object()) refuse_moved_shape_params(j);
-  const std::string endpoints = r.choice("endpoints", "corners", {"corners", "random", "fixed"});
-  map.endpoints = endpoints == "corners"  ? EndpointMode::corners
-                  : endpoints == "random" ? EndpointMode::random
-                                          : EndpointMode::fixed;
-  map.min_distance = r.number("min_distance", 0.0, 0.0, 1e6);
-  // Fixed endpoints: 0-based [x, y] cells (x right, y down, as `plan --start` and the records);
-  // whether they fit each size is checked with the cells (check_cells).
-  for (const auto& [key, cell] : {std::pair{"start", &map.start}, std::pair{"goal", &map.goal}}) {
-    const bool given = r.has(key);
-    if (given != (map.endpoints == EndpointMode::fixed))
-      throw InputError(r.field(key) + (given ? ": only with \"endpoints\": \"fixed\""
-                                             : ": missing (\"endpoints\": \"fixed\" needs "
-                                               "\"start\" and \"goal\" as [x, y])"));
-    if (!given) continue;
-    const json& v = r.raw(key);
-    if (!v.is_array() || v.size() != 2)
-      throw InputError(r.field(key) + ": expected [x, y] (0-based cells), got " + json_text(v));
-    cell->x = static_cast<int>(
-        ObjectReader::check_integer(v[0], r.field(key) + "[0]", 0, kMapSideRange.hi - 1));
-    cell->y = static_cast<int>(
-        ObjectReader::check_integer(v[1], r.field(key) + "[1]", 0, kMapSideRange.hi - 1));
-  }
-  map.require_solvable = r.boolean("require_solvable", true);
-  map.solvable_rule =
-      *corner_rule_from_string(r.choice("solvable_rule", std::string(to_string(map.solvable_rule)),
-                                        {"allow", "no_squeeze", "no_corner_cut"}));
-  map.max_attempts = static_cast<int>(r.integer("max_attempts", 1000, 1, 1000000));
-  map.cell_edge = r.number("cell_edge", 1.0, 1e-6, 1e6);
-  r.finish();
-}
-
 // A registered generator or map source: InputError naming `where` otherwise.
 void check_generator_name(const std::string& name, const std::string& where) {
   if (find_map_source(name) != nullptr) return;
@@ -391,6 +344,52 @@ void load_config_plugins(const json& list, const std::string& base_dir) {
 }
 
 }  // namespace
+
+CollisionModel parse_collision(const json& j) {
+  ObjectReader r(j, "collision.");
+  CollisionModel model;
+  model.corner_rule =
+      *corner_rule_from_string(r.choice("corner_rule", std::string(to_string(model.corner_rule)),
+                                        {"allow", "no_squeeze", "no_corner_cut"}));
+  model.clearance = r.number("clearance", 0.0, -1e300, 1e300);
+  check_model_clearance(model, "collision.clearance");
+  r.finish();
+  return model;
+}
+
+void parse_map_options(const json& j, MapSpec& map) {
+  ObjectReader r(j, "map.");
+  if (j.is_object()) refuse_moved_shape_params(j);
+  const std::string endpoints = r.choice("endpoints", "corners", {"corners", "random", "fixed"});
+  map.endpoints = endpoints == "corners"  ? EndpointMode::corners
+                  : endpoints == "random" ? EndpointMode::random
+                                          : EndpointMode::fixed;
+  map.min_distance = r.number("min_distance", 0.0, 0.0, 1e6);
+  // Fixed endpoints: 0-based [x, y] cells (x right, y down, as `plan --start` and the records);
+  // whether they fit each size is checked with the cells (check_cells).
+  for (const auto& [key, cell] : {std::pair{"start", &map.start}, std::pair{"goal", &map.goal}}) {
+    const bool given = r.has(key);
+    if (given != (map.endpoints == EndpointMode::fixed))
+      throw InputError(r.field(key) + (given ? ": only with \"endpoints\": \"fixed\""
+                                             : ": missing (\"endpoints\": \"fixed\" needs "
+                                               "\"start\" and \"goal\" as [x, y])"));
+    if (!given) continue;
+    const json& v = r.raw(key);
+    if (!v.is_array() || v.size() != 2)
+      throw InputError(r.field(key) + ": expected [x, y] (0-based cells), got " + json_text(v));
+    cell->x = static_cast<int>(
+        ObjectReader::check_integer(v[0], r.field(key) + "[0]", 0, kMapSideRange.hi - 1));
+    cell->y = static_cast<int>(
+        ObjectReader::check_integer(v[1], r.field(key) + "[1]", 0, kMapSideRange.hi - 1));
+  }
+  map.require_solvable = r.boolean("require_solvable", true);
+  map.solvable_rule =
+      *corner_rule_from_string(r.choice("solvable_rule", std::string(to_string(map.solvable_rule)),
+                                        {"allow", "no_squeeze", "no_corner_cut"}));
+  map.max_attempts = static_cast<int>(r.integer("max_attempts", 1000, 1, 1000000));
+  map.cell_edge = r.number("cell_edge", 1.0, 1e-6, 1e6);
+  r.finish();
+}
 
 SweepConfig parse_config(const json& j, const std::string& base_dir) {
   SweepConfig c;

@@ -11,6 +11,12 @@
 
 namespace agv {
 
+// A config's "collision" object ({} or absent: the default model) and "map" object (endpoints,
+// solvability, cell edge) into `map`; InputError naming the field (collision.<key>, map.<key>).
+// The Python module reads its `collision=` and `map=` arguments with these.
+CollisionModel parse_collision(const nlohmann::json& j);
+void parse_map_options(const nlohmann::json& j, MapSpec& map);
+
 // Throws InputError naming the field. Loads the config's "plugins" first (engine/plan/plugins.h); a
 // plugin's path and a map source's file patterns are relative to `base_dir` (load_config: the
 // config file's folder).

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The dependency rule of docs/ARCHITECTURE.md, checked on the includes: core/ includes nothing of
 # ours; generators/ and algos/ stand on core/ only and never include each other (nor engine/);
-# nothing below the command line includes cli/ (a second front-end drives the engine without it);
+# nothing below the command line includes cli/, and python/ (the second front-end) drives the
+# engine without it;
 # at the top of algos/ sit only the planner interface, what a planner declares and the registry;
 # engine/ is in rooms, each including only the rooms before it (docs/ARCHITECTURE.md "Engine
 # rooms"): system, judge, plan, outputs, sweep; no source lies outside a room.
@@ -23,7 +24,9 @@ forbid() {  # FOLDER PATTERN WHY
 forbid core 'generators|algos|engine|cli' 'core knows no map source, no planner, no sweep'
 forbid generators 'algos|engine|cli' 'a generator knows no planner'
 forbid algos 'generators|engine|cli' 'a planner sees a grid, never how it was made'
-forbid engine 'cli' 'the command line is a front-end above the engine'
+forbid engine 'cli|python' 'the command line is a front-end above the engine'
+forbid python 'cli' 'the Python module is the second front-end: it drives the engine, not the CLI'
+forbid cli 'python' 'the two front-ends stand side by side'
 top=$(find algos -maxdepth 1 -name '*.cpp' -printf '%f\n' | sort | tr '\n' ' ')
 if [ "$top" = "planner.cpp planner_info.cpp registry.cpp " ]; then
   echo "ok   algos/ top level holds only the interface, the planner declaration and the registry"

@@ -59,6 +59,9 @@ RunColumns RunRows::take() {
 }
 
 RunColumns concatenate_runs(std::vector<RunColumns> blocks) {
+  // One block with the journal's columns alone (a one-cell sweep, a journal): it is the table.
+  if (blocks.size() == 1 && blocks[0].metric_names == journal_metric_names())
+    return std::move(blocks[0]);
   RunColumns out;
   out.metric_names = journal_metric_names();
   std::set<std::string> others;

@@ -63,19 +63,28 @@ def runs_frame(runs):
     cells = runs["cells"]
     cell = c["cell"]
 
-    def per_cell(key, dtype):
-        # A journal's map-file cell has no generator, size or density: <NA> / NaN there.
-        return pandas.array([x[key] for x in cells], dtype=dtype)[cell]
+    def per_cell(key, dtype, missing):
+        # A journal's map-file cell has no generator, size or density: `missing` there.
+        values = [x[key] for x in cells]
+        if any(v is None for v in values):
+            return pandas.array(values, dtype=missing)[cell]
+        return numpy.asarray(values, dtype=dtype)[cell]
 
+    generators = [x["generator"] for x in cells]
+    names = sorted({g for g in generators if g is not None})
+    generator_code = numpy.asarray([-1 if g is None else names.index(g) for g in generators],
+                                   dtype=numpy.int16)
+    density = per_cell("density", numpy.float64, "Float64")
     frame = {
         "cell": pandas.Categorical.from_codes(cell, [x["key"] for x in cells]),
-        "generator": pandas.Categorical(per_cell("generator", object)),
-        "width": per_cell("width", "Int32"),
-        "height": per_cell("height", "Int32"),
-        "density": per_cell("density", "Float64").to_numpy(dtype=numpy.float64,
-                                                           na_value=numpy.nan),
+        "generator": pandas.Categorical.from_codes(generator_code[cell], names),
+        "width": per_cell("width", numpy.int32, "Int32"),
+        "height": per_cell("height", numpy.int32, "Int32"),
+        "density": density if isinstance(density, numpy.ndarray)
+        else density.to_numpy(dtype=numpy.float64, na_value=numpy.nan),
         "map_index": c["map_index"],
-        "seed": pandas.array([runs["seed"]] * len(cell), dtype="Int64"),
+        "seed": numpy.full(len(cell), runs["seed"], dtype=numpy.int64) if runs["seed"] is not None
+        else pandas.array([None] * len(cell), dtype="Int64"),
         "planner": pandas.Categorical.from_codes(c["planner"], runs["planners"]),
         "outcome": pandas.Categorical.from_codes(c["outcome"].astype(numpy.int16),
                                                  runs["outcomes"]),

@@ -226,3 +226,21 @@ def test_shards_merge_into_the_whole_report(tmp_path, cli):
     assert not partial.complete and len(partial.runs) < len(whole.runs)
     with pytest.raises(ValueError, match="out"):
         agvbench.merge(CONFIG, journals, out=journals[0])
+
+
+def test_map_file_cells_in_the_frame_and_read_back(tmp_path):
+    (tmp_path / "room.map").write_text("type octile\nheight 6\nwidth 8\nmap\n" + "\n".join(
+        ["........", "...@@...", "........", "..@.....", "..@.....", "........"]) + "\n")
+    config = {**CONFIG, "generators": ["uniform", {"name": "movingai",
+                                                   "params": {"files": [str(tmp_path / "room.map")]}}],
+              "maps_per_cell": 3}
+    got = agvbench.run(config, runs_out=tmp_path / "runs.jsonl")
+    files = got.runs[got.runs["generator"] == "movingai"]
+    assert len(files) == 3 * 3 + 2  # ma_star runs on the first 2 maps of each cell
+    assert set(zip(files["width"], files["height"])) == {(8, 6)}
+    back = agvbench.read_runs(tmp_path / "runs.jsonl")
+    mine = back[back["cell"] == "movingai/room.map"]
+    assert len(mine) == 11 and mine["generator"].isna().all() and mine["width"].isna().all()
+    assert mine["path_length"].tolist() == files["path_length"].tolist()
+    generated = back[back["cell"] != "movingai/room.map"]
+    assert (generated["generator"] == "uniform").all() and generated["width"].notna().all()

@@ -17,6 +17,7 @@
 #include "algos/search/ma_star.h"
 #include "algos/swarm/aco.h"
 #include "algos/swarm/hma_star.h"
+#include "core/input_error.h"
 
 namespace agv {
 
@@ -202,6 +203,28 @@ nlohmann::json with_model_defaults(const PlannerInfo& info, const nlohmann::json
   return out;
 }
 
+// The planner's make function called: a plugin's that throws (a std::exception or anything
+// else) or returns no planner is bad input naming the plugin and the planner, never a crash.
+std::unique_ptr<Planner> make_planner(const PlannerInfo& info, const Params& params,
+                                      const std::string& where) {
+  const std::string who = where + ": " +
+                          (info.plugin.empty() ? "" : "plugin \"" + info.plugin + "\"'s ") +
+                          "planner \"" + info.name + "\"";
+  std::unique_ptr<Planner> planner;
+  try {
+    planner = info.make(params);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    if (info.plugin.empty()) throw;  // a built-in's own error keeps its type
+    throw InputError(who + ": its make function failed: " + e.what());
+  } catch (...) {
+    throw InputError(who + ": its make function threw something that is not a std::exception");
+  }
+  if (planner == nullptr) throw InputError(who + ": its make function returned no planner (null)");
+  return planner;
+}
+
 }  // namespace
 
 ConfiguredPlanner configure_planner(const std::string& name, const nlohmann::json& params,
@@ -218,7 +241,7 @@ ConfiguredPlanner configure_planner(const std::string& name, const nlohmann::jso
   c.info = info;
   const nlohmann::json given = with_model_defaults(*info, params, model, c.looser_than_model);
   c.params = Params::resolve(info->params, given, where + ".params");
-  c.planner = info->make(c.params);
+  c.planner = make_planner(*info, c.params, where);
   return c;
 }
 

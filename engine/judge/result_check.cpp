@@ -52,4 +52,15 @@ std::string result_contract_problem(const PlanResult& result) {
   return "";
 }
 
+std::string phase_time_problem(const PlanResult& result, std::int64_t plan_time_ns) {
+  for (const PhaseTime& phase : result.phases) {
+    if (phase.ns < 0)
+      return "phase \"" + phase.name + "\" time " + std::to_string(phase.ns) + " ns is negative";
+    if (phase.ns > plan_time_ns)
+      return "phase \"" + phase.name + "\" time " + std::to_string(phase.ns) +
+             " ns is longer than the whole call (" + std::to_string(plan_time_ns) + " ns)";
+  }
+  return "";
+}
+
 }  // namespace agv

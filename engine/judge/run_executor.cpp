@@ -113,7 +113,9 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
   out.metrics.fill(std::numeric_limits<double>::quiet_NaN());
   const PlanRequest request{map.grid(), map.start(), map.goal(), rng, scratch, deadline};
   if (!call_planner(planner, request, out)) return out;
-  if (std::string why = result_contract_problem(out.result); !why.empty()) {
+  std::string why = result_contract_problem(out.result);
+  if (why.empty()) why = phase_time_problem(out.result, out.plan_time_ns);
+  if (!why.empty()) {
     // Nothing of it is recorded: its extras could pass for what the engine measures.
     out.outcome = Outcome::crash;
     out.message = "planner broke the result contract: " + why;

@@ -35,6 +35,15 @@ bool valid_plugin_name(const std::string& name) {
   return true;
 }
 
+// A planner's name is an identifier (it names config entries, report keys, file names of the
+// pictures and HTML ids): a letter, then letters, digits, '_' and '-'.
+bool valid_planner_name(const std::string& name) {
+  if (name.empty() || !std::isalpha(static_cast<unsigned char>(name[0]))) return false;
+  for (const char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') return false;
+  return true;
+}
+
 std::string text_or(const char* text, const char* fallback) {
   return text == nullptr ? fallback : text;
 }
@@ -93,12 +102,29 @@ std::vector<PlannerInfo> planners_of(const AgvPlugin& plugin, const std::string&
   for (auto& info : planners) {
     if (info.name.empty() || info.make == nullptr)
       throw InputError(who + ": a planner without a name or a make function");
+    if (!valid_planner_name(info.name))
+      throw InputError(who + ": planner name \"" + info.name +
+                       "\" is not an identifier (a letter, then letters, digits, '_' and '-')");
     if (!names.insert(info.name).second)
       throw InputError(who + ": planner \"" + info.name + "\" handed over twice");
     check_declarations(info, who + ": planner \"" + info.name + "\"");
     info.plugin = plugin.name;
   }
   return planners;
+}
+
+// The plugin's entry point, whatever it throws turned into an InputError naming the plugin.
+const AgvPlugin* call_entry(AgvPluginEntry entry, const std::string& who) {
+  const std::string what = who + "'s " AGVBENCH_PLUGIN_ENTRY;
+  const ForeignCodeScope foreign(what.c_str());
+  try {
+    return entry();
+  } catch (const std::exception& e) {
+    throw InputError(who + ": " AGVBENCH_PLUGIN_ENTRY " failed: " + e.what());
+  } catch (...) {
+    throw InputError(who + ": " AGVBENCH_PLUGIN_ENTRY
+                           " threw something that is not a std::exception");
+  }
 }
 
 const PluginRecord* find_loaded(const std::string& path) {
@@ -133,7 +159,7 @@ const PluginRecord& load_plugin(const std::string& path, const std::string& wher
   if (symbol == nullptr)
     throw InputError(who + ": no entry point " AGVBENCH_PLUGIN_ENTRY
                            " (not an agvbench plugin, or one for another plugin ABI)");
-  const AgvPlugin* plugin = reinterpret_cast<AgvPluginEntry>(symbol)();
+  const AgvPlugin* plugin = call_entry(reinterpret_cast<AgvPluginEntry>(symbol), who);
   if (plugin == nullptr) throw InputError(who + ": " AGVBENCH_PLUGIN_ENTRY " returned null");
   check_build(plugin->build, who);
 

@@ -249,6 +249,8 @@ class ExitPlanner : public agv::Planner {
   agv::PlanResult plan(const agv::PlanRequest&) const override { std::exit(0); }
 };
 std::unique_ptr<agv::Planner> make_exit(const agv::Params&) { return std::make_unique<ExitPlanner>(); }
+std::unique_ptr<agv::Planner> make_throw(const agv::Params&) { throw 42; }
+std::unique_ptr<agv::Planner> make_null(const agv::Params&) { return nullptr; }
 // A* whose result is then spoilt as the mode says: a NaN point in its path, an extra metric
 // named as one the engine measures, one given twice.
 class SpoiltAStar : public agv::Planner {
@@ -266,6 +268,8 @@ class SpoiltAStar : public agv::Planner {
       r.rule = static_cast<agv::CornerRule>(7);
     }
     if (mode == "failure_out_of_range") r.failure = static_cast<agv::Failure>(42);
+    if (mode == "phase_negative") r.phases.push_back({"forged", -5});
+    if (mode == "phase_too_long") r.phases.push_back({"forged", std::int64_t{1} << 50});
     return r;
   }
  private:
@@ -293,7 +297,11 @@ void add(void* out) {
     info.params.push_back(ParamSpec::choice("c", "z", {"a", "b"}, ""));
   if (mode == "counter_unknown") info.counters.push_back({"expansions", "nodes"});
   if (mode == "exit_in_plan") info.make = make_exit;
+  if (mode == "make_throw_int") info.make = make_throw;
+  if (mode == "make_null") info.make = make_null;
+  if (mode == "planner_name_markup") info.name = "bad/<b>name</b> x";
   if (mode == "nan_path" || mode == "reserved_extra" || mode == "extra_twice" ||
+      mode == "phase_negative" || mode == "phase_too_long" ||
       mode == "rule_out_of_range" || mode == "failure_out_of_range") {
     g_astar_make = info.make;
     info.make = make_spoilt;
@@ -302,6 +310,8 @@ void add(void* out) {
 }
 }  // namespace
 extern "C" AGVBENCH_PLUGIN_EXPORT const AgvPlugin* agvbench_plugin_v1(void) {
+  const char* env = std::getenv("AGV_MISBEHAVE");
+  if (env != nullptr && std::string(env) == "entry_throw_int") throw 42;
   static const AgvPlugin plugin = {
       {AGVBENCH_PLUGIN_ABI, AGVBENCH_VERSION, AGVBENCH_PLUGIN_TOOLCHAIN, __VERSION__}, "misbehave",
       "0.1", add};
@@ -402,6 +412,8 @@ misbehaves() {  # MODE PATTERN
   AGV_MISBEHAVE=$1 expect_refusal "plugin: $1" "libmisbehave\.so.*$2" --plugin "$m"
 }
 misbehaves throw_int 'threw something that is not a std::exception'
+misbehaves entry_throw_int 'agvbench_plugin_v1 threw something that is not a std::exception'
+misbehaves planner_name_markup 'planner name "bad/<b>name</b> x" is not an identifier'
 misbehaves null_make 'without a name or a make function'
 misbehaves param_empty_name 'parameter "".*a name must be a word'
 misbehaves param_twice 'parameter "[a-z_]+": declared twice'
@@ -417,6 +429,24 @@ rc=$?
   bad "plugin: exit() in add_planners: exit $rc, $(cat err.txt)"
 sed 's|"\.\./example-build/libgbfs_plugin.so"|"../bad-build/libmisbehave.so"|; s|"gbfs",|"misbehave_astar",|; s|{"name": "gbfs", "label": "gbfs_manhattan", "params": {"heuristic": "manhattan"}}|"dijkstra"|' \
   sweep/config.json >sweep/exit.json
+# Issue 49 class 2: a planner factory that throws something that is not a std::exception, or
+# returns no planner, is bad input naming the plugin and the planner (validate, run and plan:
+# exit 2, nothing written), never SIGABRT or SIGSEGV.
+for mode in make_throw_int make_null; do
+  pattern='plugin "misbehave".s planner "misbehave_astar": its make function (threw something that is not a std::exception|returned no planner)'
+  AGV_MISBEHAVE=$mode "$bin" validate sweep/exit.json >out.txt 2>err.txt
+  rc_validate=$?
+  grep -qE "$pattern" err.txt || rc_validate=99
+  AGV_MISBEHAVE=$mode "$bin" run sweep/exit.json --out make.json --quiet >out.txt 2>err.txt
+  rc_run=$?
+  grep -qE "$pattern" err.txt || rc_run=99
+  AGV_MISBEHAVE=$mode "$bin" plan --plugin "$m" --planner misbehave_astar --no-ascii >out.txt 2>err.txt
+  rc_plan=$?
+  grep -qE "$pattern" err.txt || rc_plan=99
+  [ "$rc_validate $rc_run $rc_plan" = "2 2 2" ] && [ ! -e make.json ] &&
+    ok "plugin: $mode: validate, run and plan exit 2, $(head -c 150 err.txt)" ||
+    bad "plugin: $mode: exits $rc_validate $rc_run $rc_plan, $(cat err.txt)"
+done
 AGV_MISBEHAVE=exit_in_plan "$bin" run sweep/exit.json --threads 2 --out exit.json --quiet >out.txt 2>err.txt
 rc=$?
 [ $rc -eq 1 ] && grep -q 'planner "misbehave_astar", in the middle of its run on map [0-9]* of cell .*, called exit()' err.txt &&
@@ -459,6 +489,8 @@ judged reserved_extra crash 'extra metric "path_length" is a name the engine mea
 judged extra_twice crash 'extra metric "mine" given twice'
 judged rule_out_of_range crash 'corner rule 7 is not one of'
 judged failure_out_of_range crash 'outcome \(failure\) 42 is not one of'
+judged phase_negative crash 'phase "forged" time -5 ns is negative'
+judged phase_too_long crash 'phase "forged" time [0-9]+ ns is longer than the whole call'
 # A small map with straight queries whose optima are plain: 5, 7 and 5 cells.
 printf 'type octile\nheight 6\nwidth 8\nmap\n........\n........\n........\n........\n........\n........\n' >open.map
 printf 'version 1\n0\topen.map\t8\t6\t0\t0\t5\t0\t5\n0\topen.map\t8\t6\t0\t2\t7\t2\t7\n0\topen.map\t8\t6\t3\t0\t3\t5\t5\n' >open.map.scen

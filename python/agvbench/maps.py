@@ -9,6 +9,14 @@ from agvbench import _core
 from agvbench.plain import plain
 
 
+class CellGrid(numpy.ndarray):
+    """A map's grid that remembers what names its runs' random streams (cell, map_index, seed,
+    cell_edge in `stream`), so that plan(m.grid, m.start, m.goal, planner) draws what the
+    sweep's run draws, as plan(m, ...) does. A slice or copy is another grid and forgets it."""
+
+    stream = None
+
+
 @dataclass(frozen=True)
 class Map:
     """A grid (rows x columns, True = obstacle) and what names its runs' random streams.
@@ -26,6 +34,12 @@ class Map:
     seed: int = 0
     cell_edge: float = 1.0
     params: dict = field(default_factory=dict)
+
+    def __post_init__(self):
+        grid = self.grid.view(CellGrid)
+        grid.stream = {"cell": self.cell, "map_index": self.map_index, "seed": self.seed,
+                       "cell_edge": self.cell_edge}
+        object.__setattr__(self, "grid", grid)
 
 
 def make_map(generator, size, density, seed, map_index=0, *, map=None, **params):

@@ -5,7 +5,7 @@ from dataclasses import dataclass
 import numpy
 
 from agvbench import _core
-from agvbench.maps import Map
+from agvbench.maps import CellGrid, Map
 from agvbench.plain import plain
 
 
@@ -37,6 +37,12 @@ def plan(grid, start=None, goal=None, planner="astar", *, collision=None, time_l
     planner's parameters. The run's random stream is the sweep's for (seed, cell, map_index,
     planner). Raises ValueError naming a bad argument.
     """
+    if isinstance(grid, CellGrid) and grid.stream is not None:
+        stream = grid.stream
+        seed = stream["seed"] if seed is None else seed
+        cell = stream["cell"] if cell is None else cell
+        map_index = stream["map_index"] if map_index is None else map_index
+        cell_edge = stream["cell_edge"] if cell_edge is None else cell_edge
     if isinstance(grid, Map):
         start = grid.start if start is None else start
         goal = grid.goal if goal is None else goal

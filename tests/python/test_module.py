@@ -184,3 +184,15 @@ def test_cmake_install_puts_it_where_debians_python_finds_it(tmp_path):
                          env=env, cwd=tmp_path)
     assert out.returncode == 0, out.stderr
     assert out.stdout.split() == [str(site / "agvbench" / "__init__.py"), "success"]
+
+
+def test_a_maps_grid_alone_plans_as_the_map(cli):
+    # plan(m.grid, m.start, m.goal, ...) draws the sweep's random stream as plan(m, ...) does.
+    m = agvbench.make_map("uniform", 40, 0.2, 5, 3)
+    runs = plan_runs(cli, ["rrt", "prm"], "--size", 40, "--density", 0.2, "--seed", 5,
+                     "--map-index", 3)
+    for run in runs:
+        got = agvbench.plan(m.grid, m.start, m.goal, run["planner"])
+        assert got.path.tolist() == run["path"] and got.metrics == run["metrics"]
+    assert agvbench.plan(m.grid.copy(), m.start, m.goal, "astar").outcome == "success"
+    assert isinstance(m.grid, numpy.ndarray) and m.grid.dtype == numpy.bool_

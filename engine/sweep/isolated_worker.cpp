@@ -19,6 +19,7 @@
 #include "engine/plan/config_loader.h"
 #include "engine/sweep/map_task.h"
 #include "engine/system/file_writes.h"
+#include "engine/system/stray_children.h"
 
 extern char** environ;
 
@@ -71,6 +72,13 @@ std::string read_task_request(const std::string& line, const MapTaskContext& con
   return "";
 }
 
+// A worker is over: what its planners started and left behind (in the worker's group or, having
+// left it, handed to us as orphans) is killed.
+void forget_worker(pid_t pid) {
+  LiveWorkers::remove(pid);
+  LiveWorkers::kill_strays();
+}
+
 }  // namespace
 
 WorkerProcess::WorkerProcess(std::vector<std::string> command, std::int64_t memory_mb,
@@ -106,7 +114,15 @@ void WorkerProcess::spawn() {
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
-  const int rc = posix_spawn(&pid_, argv[0], &actions, &attributes, argv.data(), environ);
+  // Orphans below the worker come to us (engine/system/stray_children.h); the worker is
+  // registered before any other thread can sweep for strays.
+  adopt_orphans();
+  int rc = 0;
+  {
+    const LiveWorkers::SpawnLock registering;
+    rc = posix_spawn(&pid_, argv[0], &actions, &attributes, argv.data(), environ);
+    if (rc == 0) LiveWorkers::add(pid_);
+  }
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
   // And in the parent, as a shell does, so no window exists in which the child is still in our
@@ -189,6 +205,7 @@ void WorkerProcess::stop() {
     int status = 0;
     while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
+    forget_worker(pid_);
   }
   if (to_child_ >= 0) ::close(to_child_);
   if (from_child_ >= 0) ::close(from_child_);
@@ -217,6 +234,7 @@ std::string WorkerProcess::describe_exit(bool& interrupted, std::int64_t& cpu_ns
                 1000
           : -1;
   ::kill(-pid_, SIGKILL);  // what its planner started, if anything is left of its group
+  forget_worker(pid_);
   pid_ = -1;
   interrupted = false;
   if (r > 0 && WIFSIGNALED(status)) {

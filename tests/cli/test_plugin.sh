@@ -237,10 +237,13 @@ EOF_CPP
 # parameter and counter declarations, exit() while loading or while planning.
 cat >bad/misbehave.cpp <<'EOF_CPP'
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
+#include <fcntl.h>
+#include <unistd.h>
 #include "agvbench/algos/plugin.h"
 #include "agvbench/algos/search/astar.h"
 namespace {
@@ -257,9 +260,20 @@ class SpoiltAStar : public agv::Planner {
  public:
   explicit SpoiltAStar(std::unique_ptr<agv::Planner> inner) : inner_(std::move(inner)) {}
   agv::PlanResult plan(const agv::PlanRequest& request) const override {
-    agv::PlanResult r = inner_->plan(request);
     const char* env = std::getenv("AGV_MISBEHAVE");
     const std::string mode = env ? env : "";
+    // A child that leaves the worker's process group and hangs, its pid appended to a file.
+    if (mode == "fork_setsid" && ::fork() == 0) {
+      ::setsid();
+      if (const char* file = std::getenv("AGV_STRAY_PIDS")) {
+        char line[32];
+        const int n = std::snprintf(line, sizeof line, "%d\n", static_cast<int>(::getpid()));
+        const int fd = ::open(file, O_WRONLY | O_APPEND | O_CREAT, 0644);
+        if (fd >= 0 && ::write(fd, line, static_cast<size_t>(n)) == n) ::close(fd);
+      }
+      for (;;) ::pause();
+    }
+    agv::PlanResult r = inner_->plan(request);
     if (mode == "nan_path" && r.path.size() >= 2) r.path[1] = {std::nan(""), std::nan("")};
     if (mode == "reserved_extra") r.extra.push_back({"path_length", 0.0});
     if (mode == "extra_twice") r.extra.insert(r.extra.end(), {{"mine", 1.0}, {"mine", 2.0}});
@@ -301,7 +315,7 @@ void add(void* out) {
   if (mode == "make_null") info.make = make_null;
   if (mode == "planner_name_markup") info.name = "bad/<b>name</b> x";
   if (mode == "nan_path" || mode == "reserved_extra" || mode == "extra_twice" ||
-      mode == "phase_negative" || mode == "phase_too_long" ||
+      mode == "phase_negative" || mode == "phase_too_long" || mode == "fork_setsid" ||
       mode == "rule_out_of_range" || mode == "failure_out_of_range") {
     g_astar_make = info.make;
     info.make = make_spoilt;
@@ -463,6 +477,24 @@ by = collections.Counter((r["planner"], r["outcome"]) for r in records)
 n = int(sys.argv[2])
 assert by[("misbehave_astar", "crash")] == n and by[("astar", "success")] == n, by
 EOF_PY
+# Issue 49 class 1: a planner's child that leaves the worker's process group (setsid) and hangs
+# does not outlive the sweep: agvbench, a child subreaper, adopts and kills it.
+: >strays.txt
+AGV_MISBEHAVE=fork_setsid AGV_STRAY_PIDS=$PWD/strays.txt "$bin" run sweep/exit.json --threads 2 \
+  "${isolate[@]}" --out strays.json --quiet >out.txt 2>err.txt
+rc=$?
+sleep 0.2
+forked=0 alive=0
+while read -r pid; do
+  forked=$((forked + 1))
+  if [ -e "/proc/$pid" ] && ! grep -q '^State:[[:space:]]*Z' "/proc/$pid/status" 2>/dev/null; then
+    alive=$((alive + 1))
+    kill -9 "$pid" 2>/dev/null
+  fi
+done <strays.txt
+[ $rc -eq 0 ] && [ "$forked" -gt 0 ] && [ "$alive" -eq 0 ] &&
+  ok "plugin: setsid children of isolated runs: $forked started, none left after the sweep" ||
+  bad "plugin: setsid children: exit $rc, $alive of $forked still running, $(tail -2 err.txt)"
 # What a planner returns is judged, whoever wrote it: a path with a NaN point is invalid, in a
 # sweep and in `scen`; an extra metric named as one the engine measures, or given twice, makes
 # the run a crash (nothing of it recorded), and the measured value stands; so does an outcome or

@@ -9,7 +9,6 @@
 
 #include "core/input_error.h"
 #include "core/version.h"
-#include "engine/judge/outcome.h"
 #include "engine/outputs/run_record.h"
 #include "engine/plan/catalogue.h"
 #include "python/py_maps.h"
@@ -72,10 +71,5 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "metric_names", [] { return pyjson::from_json(journal_metric_names()); },
       "the journal's metric order (reports/SCHEMA.md)");
-  m.def("outcome_names", [] {
-    py::list names;
-    for (int k = 0; k < kOutcomeCount; ++k)
-      names.append(std::string(to_string(static_cast<Outcome>(k))));
-    return names;
-  });
+  m.def("outcome_names", &py_bind::outcome_names);
 }

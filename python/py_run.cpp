@@ -25,7 +25,6 @@
 #include "engine/plan/output_paths.h"
 #include "engine/plan/sweep_size.h"
 #include "engine/sweep/sweep_runner.h"
-#include "engine/system/file_writes.h"
 
 namespace py = pybind11;
 using nlohmann::json;
@@ -112,16 +111,23 @@ py::list metric_arrays(RunColumns& c) {
   return metrics;
 }
 
-py::list outcome_names() {
-  py::list outcomes;
-  for (int k = 0; k < kOutcomeCount; ++k)
-    outcomes.append(std::string(to_string(static_cast<Outcome>(k))));
-  return outcomes;
-}
-
 py::list label_list(const std::vector<std::string>& labels) {
   py::list out;
   for (const std::string& label : labels) out.append(label);
+  return out;
+}
+
+// The runs as the package's runs_frame reads them: numpy columns, and the cells, planners and
+// outcomes their codes index.
+py::dict runs_payload(RunColumns& c, py::list cells, const std::vector<std::string>& planners,
+                      py::object seed) {
+  py::dict out;
+  out["columns"] = column_arrays(c);
+  out["metrics"] = metric_arrays(c);
+  out["cells"] = std::move(cells);
+  out["planners"] = label_list(planners);
+  out["outcomes"] = outcome_names();
+  out["seed"] = std::move(seed);
   return out;
 }
 
@@ -136,13 +142,16 @@ py::dict runs_dict(RunColumns c, const SweepConfig& config, const SweepResults& 
     d["density"] = cell.density;
     cells.append(d);
   }
+  return runs_payload(c, std::move(cells), results.labels, py::int_(config.seed));
+}
+
+// What run() and merge() return: the report, the runs (keep_runs) and completeness.
+py::dict sweep_result(const json& report, RunTable& table, const RunCall& call,
+                      const SweepConfig& config, const SweepResults& results) {
   py::dict out;
-  out["columns"] = column_arrays(c);
-  out["metrics"] = metric_arrays(c);
-  out["cells"] = cells;
-  out["planners"] = label_list(results.labels);
-  out["outcomes"] = outcome_names();
-  out["seed"] = config.seed;
+  out["report"] = pyjson::from_json(report);
+  out["runs"] = call.keep_runs ? py::object(runs_dict(table.take(), config, results)) : py::none();
+  out["complete"] = results.complete;
   return out;
 }
 
@@ -233,12 +242,8 @@ py::dict run(const RunCall& call, const py::object& progress) {
   options.sinks.push_back(&counter);
   sweep_beside_python(config, results, options, counter, progress);
   if (!results.sink_error.empty()) throw std::runtime_error(results.sink_error);
-  py::dict out;
-  out["report"] =
-      pyjson::from_json(report_sink ? report_sink->report() : build_report(config, results));
-  out["runs"] = call.keep_runs ? py::object(runs_dict(table.take(), config, results)) : py::none();
-  out["complete"] = results.complete;
-  return out;
+  return sweep_result(report_sink ? report_sink->report() : build_report(config, results), table,
+                      call, config, results);
 }
 
 py::dict merge(const RunCall& call, const std::vector<std::string>& journals) {
@@ -254,15 +259,12 @@ py::dict merge(const RunCall& call, const std::vector<std::string>& journals) {
     restore_journals(journals, results);
     update_completeness(results);
   }
+  // One document, kept and written (as ReportSink writes a kept one), not built twice.
   const json report = build_report(config, results);
-  if (!call.out.empty()) write_file_atomic(report_text(config, results), call.out);
+  if (!call.out.empty()) write_json_atomic(report, call.out);
   RunTable table;
-  table.finish(results);
-  py::dict out;
-  out["report"] = pyjson::from_json(report);
-  out["runs"] = call.keep_runs ? py::object(runs_dict(table.take(), config, results)) : py::none();
-  out["complete"] = results.complete;
-  return out;
+  if (call.keep_runs) table.finish(results);
+  return sweep_result(report, table, call, config, results);
 }
 
 py::dict read_journal(const std::string& path) {
@@ -273,16 +275,17 @@ py::dict read_journal(const std::string& path) {
   }
   py::list cells;
   for (const auto& c : table.cells) cells.append(journal_cell(c));
-  py::dict out;
-  out["columns"] = column_arrays(table.runs);
-  out["metrics"] = metric_arrays(table.runs);
-  out["cells"] = cells;
-  out["planners"] = label_list(table.planners);
-  out["outcomes"] = outcome_names();
-  out["seed"] = py::none();
+  py::dict out = runs_payload(table.runs, std::move(cells), table.planners, py::none());
   out["duplicates"] = table.duplicates;
   out["torn_lines"] = table.torn_lines;
   return out;
+}
+
+py::list outcome_names() {
+  py::list outcomes;
+  for (int k = 0; k < kOutcomeCount; ++k)
+    outcomes.append(std::string(to_string(static_cast<Outcome>(k))));
+  return outcomes;
 }
 
 }  // namespace agv::py_bind

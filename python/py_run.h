@@ -35,4 +35,7 @@ pybind11::dict merge(const RunCall& call, const std::vector<std::string>& journa
 // with its key alone; seed None (a journal's records do not repeat it).
 pybind11::dict read_journal(const std::string& path);
 
+// The outcome names, indexed by the outcome codes of the columns.
+pybind11::list outcome_names();
+
 }  // namespace agv::py_bind

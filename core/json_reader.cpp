@@ -12,6 +12,25 @@ namespace agv {
 
 using nlohmann::json;
 
+void refuse_nul_strings(const json& j, const std::string& root) {
+  const auto refuse = [&root](const std::string& what) {
+    throw InputError((root.empty() ? std::string("config") : root) + ": " + what +
+                     " holds a NUL character (\\u0000), which no name, label or path can hold");
+  };
+  if (j.is_string()) {
+    const auto& text = j.get_ref<const std::string&>();
+    if (text.find('\0') != std::string::npos) refuse(json_text(text));
+  } else if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i)
+      refuse_nul_strings(j[i], root + "[" + std::to_string(i) + "]");
+  } else if (j.is_object()) {
+    for (const auto& [key, value] : j.items()) {
+      if (key.find('\0') != std::string::npos) refuse("key " + json_text(key));
+      refuse_nul_strings(value, root.empty() ? key : root + "." + key);
+    }
+  }
+}
+
 ObjectReader::ObjectReader(const json& j, std::string prefix, const std::string& name)
     : j_(j), where_(std::move(prefix)) {
   if (!j_.is_object()) throw InputError(name + ": expected a JSON object");

@@ -21,6 +21,12 @@ struct NumberRange {
   double hi = 0.0;
 };
 
+// Refuses a string (a key or a value, at any depth) holding a NUL character: names, labels and
+// paths end at their first NUL wherever they meet the system or a C string, so one would be read
+// as a shorter one. The InputError names the field, `root` first ("" for a whole config:
+// "generators[0].files[1]").
+void refuse_nul_strings(const nlohmann::json& j, const std::string& root);
+
 // `prefix` goes before every field name in a message ("map." -> "map.endpoints: ..."); `name`
 // names the object itself when it is not one (default: the prefix).
 class ObjectReader {

@@ -208,6 +208,7 @@ std::vector<std::string> expand_file_patterns(const json& patterns, const std::s
     if (!patterns[i].is_string() || patterns[i].get<std::string>().empty())
       throw InputError(f + ": expected a path or glob pattern");
     const std::string pattern = patterns[i].get<std::string>();
+    refuse_nul_strings(patterns[i], f);  // glob() would read a shorter pattern
     const std::string full = std::filesystem::path(pattern).is_absolute() || base_dir.empty()
                                  ? pattern
                                  : base_dir + "/" + pattern;

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -13,9 +14,11 @@
 #include "core/input_error.h"
 #include "core/json_text.h"
 #include "core/text_file.h"
+#include "core/version.h"
 #include "engine/outputs/journal_lines.h"
 #include "engine/outputs/report.h"
 #include "engine/outputs/run_record.h"
+#include "engine/plan/plugins.h"
 #include "engine/system/file_writes.h"
 
 namespace agv {
@@ -97,7 +100,23 @@ RecordRestorer::RecordRestorer(SweepResults& results, RunMessages* messages)
   for (std::size_t p = 0; p < results.labels.size(); ++p) planner_index_[results.labels[p]] = p;
 }
 
+void RecordRestorer::check_version(const DecodedRecord& rec, const std::string& where) {
+  if (version_.empty()) version_ = rec.agvbench;
+  if (rec.agvbench == version_) return;
+  throw InputError(
+      where + ": written by agvbench " + rec.agvbench + ", " +
+      (version_required_ ? "this is agvbench " + version_ + ": resuming"
+                         : "an earlier record by agvbench " + version_ + ": restoring both") +
+      " would mix two versions' runs in one report (their results may differ); " +
+      (version_required_
+           ? "finish the sweep with agvbench " + rec.agvbench + ", or start a new journal"
+           : "give journals of one version"));
+}
+
 bool RecordRestorer::restore(const DecodedRecord& rec, const std::string& where) {
+  // A version 2 segment's records are its header's; a version 1 record stands alone.
+  if (rec.kind == DecodedRecord::Kind::header || rec.version == kJournalVersionV1)
+    check_version(rec, where);
   if (rec.kind == DecodedRecord::Kind::map) return true;
   if (rec.config_hash != config_hash_)
     throw InputError(where + ": journal was written by a different config (hash " +
@@ -167,9 +186,29 @@ JournalStats for_each_journal_record(
 
 namespace {
 
-// A journal of another config: when a map file changed, its message names the file (a changed
-// map file is another config), whichever record of the journal belongs to its cell.
-void refuse_changed_map_files(const std::string& path, const SweepResults& results) {
+// A header's plugins against those loaded now (by name: a name is one plugin in a process).
+void check_plugins(const JournalHeader& then, const std::string& where) {
+  const std::vector<PluginRecord> now = loaded_plugins();
+  for (const auto& p : then.plugins) {
+    const auto same = std::find_if(now.begin(), now.end(),
+                                   [&p](const PluginRecord& n) { return n.name == p.name; });
+    if (same == now.end())
+      throw InputError(where + ": plugin \"" + p.name + "\" (" + p.path +
+                       ") was loaded by the journal's sweep and is not now: another sweep; start "
+                       "a new journal");
+    if (same->sha256 != p.sha256)
+      throw InputError(where + ": plugin \"" + p.name + "\" (" + same->path +
+                       ") changed since the journal was written (sha256 " + p.sha256 + " then, " +
+                       same->sha256 +
+                       " now): a changed plugin is another sweep; start a new "
+                       "journal");
+  }
+}
+
+// A journal of another config: when a map file or a plugin changed, its message names the file
+// (a changed map file or plugin is another config), whichever record of the journal belongs to
+// its cell.
+void refuse_changed_inputs(const std::string& path, const SweepResults& results) {
   std::map<std::string, const SweepCell*> cells;
   for (const auto& c : results.plan.cells) cells[c.key] = &c;
   const auto check = [&cells](const std::string& key, const std::string& then,
@@ -196,23 +235,22 @@ void refuse_changed_map_files(const std::string& path, const SweepResults& resul
       if (d.kind == DecodedRecord::Kind::header) {
         for (const auto& c : decoder.header()->cells)
           if (!c.content_hash.empty()) check(c.key, c.content_hash, where);
+        check_plugins(*decoder.header(), where);
       } else if (d.has_map_file) {
         check(d.cell, d.map_file_hash, where);
       }
     }
   } catch (const InputError& e) {
-    if (std::string(e.what()).find("changed since the journal was written") != std::string::npos)
+    const std::string why = e.what();
+    if (why.find("changed since the journal was written") != std::string::npos ||
+        why.find("was loaded by the journal's sweep") != std::string::npos)
       throw;
     // Anything else the first reading reports itself.
   }
 }
 
-}  // namespace
-
-JournalStats restore_journal(const std::string& path, SweepResults& results, RunMessages* messages,
-                             const SweepConfig* release) {
-  RecordRestorer restorer(results, messages);
-  if (release != nullptr) restorer.release_complete_cells(*release);
+JournalStats restore_with(RecordRestorer& restorer, const std::string& path,
+                          SweepResults& results) {
   JournalStats restored;
   try {
     JournalStats stats =
@@ -230,9 +268,26 @@ JournalStats restore_journal(const std::string& path, SweepResults& results, Run
     return stats;
   } catch (const InputError& e) {
     if (std::string(e.what()).find("written by a different config") != std::string::npos)
-      refuse_changed_map_files(path, results);
+      refuse_changed_inputs(path, results);
     throw;
   }
+}
+
+}  // namespace
+
+JournalStats restore_journal(const std::string& path, SweepResults& results, RunMessages* messages,
+                             const SweepConfig* release) {
+  RecordRestorer restorer(results, messages);
+  if (release != nullptr) restorer.release_complete_cells(*release);
+  return restore_with(restorer, path, results);
+}
+
+JournalStats restore_journal_to_resume(const std::string& path, SweepResults& results,
+                                       RunMessages* messages, const SweepConfig* release) {
+  RecordRestorer restorer(results, messages);
+  restorer.require_version(AGVBENCH_VERSION);
+  if (release != nullptr) restorer.release_complete_cells(*release);
+  return restore_with(restorer, path, results);
 }
 
 void restore_journals(const std::vector<std::string>& paths, SweepResults& results,
@@ -262,7 +317,7 @@ void restore_journals(const std::vector<std::string>& paths, SweepResults& resul
         }
       } catch (const InputError& e) {
         if (std::string(e.what()).find("written by a different config") != std::string::npos)
-          refuse_changed_map_files(paths[i], results);
+          refuse_changed_inputs(paths[i], results);
         throw;
       }
     }

@@ -93,6 +93,13 @@ class RecordRestorer {
   // Records of the results' config (its config_hash); failure messages go to `messages` when
   // given.
   explicit RecordRestorer(SweepResults& results, RunMessages* messages = nullptr);
+  // Every record must have been written by agvbench `version` (a resume: this build's); without
+  // it, by one version, whichever the first record names (a merge or an export). A run of one
+  // version restored beside a run of another would mix two builds' results in one report.
+  void require_version(std::string version) {
+    version_ = std::move(version);
+    version_required_ = true;
+  }
   // A header checks the config; a run is stored. Returns false when the run was already
   // restored (a duplicate). Throws InputError naming `where` for a record of another config
   // (naming a changed map file where that is why) or of a cell, map or planner this sweep lacks.
@@ -103,7 +110,11 @@ class RecordRestorer {
   void release_complete_cells(const SweepConfig& config);
 
  private:
+  void check_version(const DecodedRecord& record, const std::string& where);
+
   std::string config_hash_;
+  std::string version_;  // what every record must be stamped with ("" until the first)
+  bool version_required_ = false;
   SweepResults& results_;
   RunMessages* messages_;
   std::map<std::string, int> cell_index_;
@@ -147,9 +158,14 @@ JournalStats for_each_journal_record(
 // messages into `messages` when given; with `release`, the config, each cell completed is
 // released as it completes (RecordRestorer::release_complete_cells). Throws InputError for what
 // for_each_journal_record refuses, a record of another config (hash mismatch; a changed map file is
-// named) or one naming a cell, map or planner this sweep lacks.
+// named, and so is a changed plugin), one of another agvbench version than the journal's first
+// record, or one naming a cell, map or planner this sweep lacks.
 JournalStats restore_journal(const std::string& path, SweepResults& results,
                              RunMessages* messages = nullptr, const SweepConfig* release = nullptr);
+// restore_journal for a resume: every record must have been written by this agvbench's version
+// (RecordRestorer::require_version), which the runs appended to it will be.
+JournalStats restore_journal_to_resume(const std::string& path, SweepResults& results,
+                                       RunMessages* messages, const SweepConfig* release);
 
 // The same of several journals read in turn, a block of records from each (merge: the shards'
 // journals of one sweep advance through its cells together, so with `release` each cell is

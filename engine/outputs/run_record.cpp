@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "core/json_text.h"
+#include "core/version.h"
 #include "engine/judge/metric_specs.h"
 
 namespace agv {
@@ -159,6 +160,11 @@ std::string journal_header(const std::string& config_hash, const SweepConfig& co
   ordered planners = ordered::array();
   for (const PlannerEntry& p : config.planners)
     planners.push_back({{"label", p.label}, {"name", p.name}});
+  // Named again here (they are in the config hash already) so that a resume after a plugin
+  // changed can say which one did.
+  ordered plugins = ordered::array();
+  for (const PluginRecord& p : config.plugins)
+    plugins.push_back({{"name", p.name}, {"path", p.path}, {"sha256", p.sha256}});
   const ordered derived = {
       {"path_length_m", "path_length * cell_edge"},
       {"smoothness_mean", "turn_angle_rad / path_length (where path_length > 0)"},
@@ -168,12 +174,14 @@ std::string journal_header(const std::string& config_hash, const SweepConfig& co
       {"scen_ratio", "path_length / scen_optimum (1 where that is 0)"}};
   const ordered header = {{"tool", kJournalTool},
                           {"journal_version", kJournalVersion},
+                          {"agvbench", AGVBENCH_VERSION},
                           {"record", "header"},
                           {"config_hash", config_hash},
                           {"name", config.name},
                           {"seed", config.seed},
                           {"cells", cells},
                           {"planners", planners},
+                          {"plugins", plugins},
                           {"metrics", journal_metric_names()},
                           {"derived", derived},
                           {"units", {{"plan_time_ns", "ns"}, {"phases", "ns"}}}};
@@ -353,6 +361,11 @@ DecodedRecord JournalDecoder::decode(const json& rec, const std::string& where) 
 DecodedRecord JournalDecoder::decode_header(const json& rec, const std::string& where) {
   JournalHeader h;
   h.config_hash = rec.at("config_hash").get<std::string>();
+  if (const auto stamp = rec.find("agvbench"); stamp != rec.end())
+    h.agvbench = stamp->get<std::string>();
+  for (const json& p : rec.value("plugins", json::array()))
+    h.plugins.push_back({member(p, "name").get<std::string>(), member(p, "path").get<std::string>(),
+                         member(p, "sha256").get<std::string>()});
   for (const json& c : rec.at("cells")) {
     JournalHeader::Cell cell;
     cell.key = member(c, "cell").get<std::string>();
@@ -380,6 +393,7 @@ DecodedRecord JournalDecoder::decode_header(const json& rec, const std::string& 
   DecodedRecord out;
   out.kind = DecodedRecord::Kind::header;
   out.config_hash = header_->config_hash;
+  out.agvbench = header_->agvbench;
   return out;
 }
 
@@ -400,6 +414,7 @@ DecodedRecord JournalDecoder::decode_map(const json& rec, const std::string& whe
   DecodedRecord out;
   out.kind = DecodedRecord::Kind::map;
   out.config_hash = header_->config_hash;
+  out.agvbench = header_->agvbench;
   const int cell = table_index(rec, "cell", header_->cells.size(), where);
   out.cell = header_->cells[static_cast<std::size_t>(cell)].key;
   out.map_index = rec.at("map_index").get<int>();
@@ -445,6 +460,7 @@ DecodedRecord JournalDecoder::decode_run(const json& rec, const std::string& whe
   DecodedRecord out;
   out.kind = DecodedRecord::Kind::run;
   out.config_hash = header_->config_hash;
+  out.agvbench = header_->agvbench;
   const int cell = table_index(rec, "cell", header_->cells.size(), where);
   const JournalHeader::Cell& hc = header_->cells[static_cast<std::size_t>(cell)];
   out.cell = hc.key;

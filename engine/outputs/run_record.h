@@ -34,6 +34,9 @@ inline constexpr const char* kJournalTool = "agvbench";
 inline constexpr int kJournalVersion = 2;
 // The older format this agvbench still reads (never writes).
 inline constexpr int kJournalVersionV1 = 1;
+// The agvbench version a header without an "agvbench" stamp (and a version 1 journal) was
+// written by: every agvbench before the stamp was 0.1.1.
+inline constexpr const char* kVersionBeforeStamps = "0.1.1";
 
 // What a journal keeps of a map: its slot and the per-map references the ratios divide by (each
 // only where the runs computed it).
@@ -82,10 +85,17 @@ struct JournalHeader {
     std::string map_file;      // a map source's cell: the file's name
     std::string content_hash;  // and its content hash; empty for a generator's cell
   };
+  struct Plugin {
+    std::string name;
+    std::string path;
+    std::string sha256;
+  };
   std::string config_hash;
+  std::string agvbench = kVersionBeforeStamps;  // the version that wrote the segment
   std::vector<Cell> cells;
   std::vector<std::string> planners;  // labels
   std::vector<std::string> metrics;   // the mask's order
+  std::vector<Plugin> plugins;        // the sweep's plugins (none in a header before the stamp)
 };
 
 // One journal line, decoded.
@@ -93,8 +103,9 @@ struct DecodedRecord {
   enum class Kind { header, map, run };
   Kind kind = Kind::run;
   int version = kJournalVersion;
-  std::string config_hash;  // the record's (version 1) or its header's
-  std::string cell;         // key (map and run records)
+  std::string config_hash;                      // the record's (version 1) or its header's
+  std::string agvbench = kVersionBeforeStamps;  // the agvbench version that wrote it
+  std::string cell;                             // key (map and run records)
   int map_index = 0;
   std::string planner;  // label (run records)
   MapFacts map;         // map records; a version 1 run's map (slot.done when it has one)

@@ -395,6 +395,7 @@ SweepConfig parse_config(const json& j, const std::string& base_dir) {
   SweepConfig c;
   c.base_dir = base_dir;
   std::vector<json> stated_files;
+  refuse_nul_strings(j, "");
   ObjectReader r(j, "");
   if (r.has("plugins")) load_config_plugins(r.raw("plugins"), base_dir);
   c.plugins = loaded_plugins();

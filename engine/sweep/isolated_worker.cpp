@@ -381,6 +381,20 @@ int serve_tasks(Channel& channel, const SweepConfig& config, MapTaskWorkspace& w
   return 0;
 }
 
+// The config as run, each plugin's path as the parent sent it in hex when one of them is not
+// UTF-8 (JSON would have carried it as U+FFFD: a file that is not there).
+nlohmann::json with_plugin_paths(const nlohmann::json& first) {
+  nlohmann::json config = first.at("config");
+  const auto hex = first.find("plugin_paths_hex");
+  if (hex == first.end()) return config;
+  nlohmann::json& plugins = config.at("plugins");
+  if (!hex->is_array() || hex->size() != plugins.size())
+    throw std::invalid_argument("plugin_paths_hex does not match the config's plugins");
+  for (std::size_t i = 0; i < plugins.size(); ++i)
+    plugins[i]["path"] = from_hex((*hex)[i].get<std::string>());
+  return config;
+}
+
 }  // namespace
 
 int worker_main(std::int64_t memory_mb) {
@@ -407,7 +421,7 @@ int worker_main(std::int64_t memory_mb) {
     const std::string base_dir = first.contains("base_dir_hex")
                                      ? from_hex(first.at("base_dir_hex").get<std::string>())
                                      : first.value("base_dir", std::string("."));
-    config = parse_config(first.at("config"), base_dir);
+    config = parse_config(with_plugin_paths(first), base_dir);
     workspace.planners = configure_planners(config);
   } catch (const std::exception& e) {
     channel.send(json_text({{"fatal", e.what()}}) + "\n");

@@ -5,6 +5,7 @@
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <limits>
@@ -64,6 +65,14 @@ WorkerLaunch worker_launch(const SweepConfig& config, const IsolationOptions& is
   nlohmann::json first = {{"config", config_as_run(config)}, {"base_dir", config.base_dir}};
   // A folder named in bytes that are not UTF-8 would reach the worker as U+FFFD: sent as hex.
   if (!is_utf8(config.base_dir)) first["base_dir_hex"] = to_hex(config.base_dir);
+  // So would a plugin's path (a plugin in that folder): the config's "plugins" in hex, in order.
+  const bool odd_plugin_path = std::any_of(config.plugins.begin(), config.plugins.end(),
+                                           [](const PluginRecord& p) { return !is_utf8(p.path); });
+  if (odd_plugin_path) {
+    nlohmann::json paths = nlohmann::json::array();
+    for (const PluginRecord& p : config.plugins) paths.push_back(to_hex(p.path));
+    first["plugin_paths_hex"] = std::move(paths);
+  }
   launch.config_line = json_text(first);
   launch.hard_limit_s = iso.hard_limit_s > 0 ? iso.hard_limit_s : 2.0 * config.time_limit_s + 1.0;
   return launch;
@@ -377,8 +386,8 @@ void run_sweep(const SweepConfig& config, SweepResults& res, const SweepOptions&
   RunMessages restored_messages;
   // With release_cells, the cells the journal completes are released as they are read.
   if (resume)
-    restored = restore_journal(options.resume_path, res, &restored_messages,
-                               options.release_cells ? &config : nullptr);
+    restored = restore_journal_to_resume(options.resume_path, res, &restored_messages,
+                                         options.release_cells ? &config : nullptr);
   res.restored_runs = restored.records;
   // The journal is the first sink: what the others are handed is on disk first.
   std::optional<JournalSink> journal;

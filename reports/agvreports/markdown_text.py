@@ -1,6 +1,8 @@
 """Any string (a planner's label, a sweep's name) written into summary.md or CLAIMS.md so that
 GitHub-flavoured Markdown shows it as it is: in a code span, or as plain text, in a table cell
-or outside one. Standard library only.
+or outside one. No label's '<' or '&' reaches the file as it is: Markdown renderers pass HTML
+through, and not every one honours a backslash before '<' (Python-Markdown does not), while every
+one decodes &lt; and &amp;. Standard library only.
 """
 
 import re
@@ -15,15 +17,24 @@ BREAK = "<br>"
 # letters or digits: `hma_star` stays as it is).
 PLAIN_SPECIAL = re.compile(r"[\\`*<&~$|#]|\](?=\()|_(?![^\W_])|(?<![^\W_])_")
 EVERY_UNDERSCORE = re.compile(r"[\\`*<&~$|#_]|\](?=\()")
+# What opens a tag or an entity, as entities ('>' alone opens neither); the rest of the markup
+# backslash-escaped.
+ENTITIES = {"<": "&lt;", "&": "&amp;"}
+HTML_SPECIAL = re.compile(r"[<&]")
+
+
+def _escape(match):
+    c = match.group(0)
+    return ENTITIES.get(c, "\\" + c)
 
 
 def plain(text, every_underscore=False):
-    """`text` as Markdown plain text: markup characters backslash-escaped (a backslash before
-    ASCII punctuation is always a literal in CommonMark, and GFM's tables take `\\|` as a pipe
-    of the cell), line breaks as <br>."""
+    """`text` as Markdown plain text: '<' and '&' as entities, the other markup characters
+    backslash-escaped (a backslash before ASCII punctuation is always a literal in CommonMark,
+    and GFM's tables take `\\|` as a pipe of the cell), line breaks as <br>."""
     special = EVERY_UNDERSCORE if every_underscore else PLAIN_SPECIAL
     lines = LINE_BREAK.split(str(text))
-    return BREAK.join(special.sub(lambda m: "\\" + m.group(0), line) for line in lines)
+    return BREAK.join(special.sub(_escape, line) for line in lines)
 
 
 def _span(text, in_table):
@@ -43,7 +54,12 @@ def _span(text, in_table):
 
 def code(text, in_table=False):
     """`text` as a code span (backslashes and markup are literal there), a longer fence when the
-    text holds backticks; a line break closes the span and opens another after a <br>."""
+    text holds backticks; a line break closes the span and opens another after a <br>. A text
+    holding '<' or '&' is a <code> element instead, its content escaped as plain text: inside
+    a code span an entity would show as written, and the raw character would be a tag or an
+    entity to a renderer that does not honour the span."""
+    if HTML_SPECIAL.search(str(text)):
+        return f"<code>{plain(text, every_underscore=True)}</code>"
     lines = LINE_BREAK.split(str(text))
     spans = [_span(line, in_table) if line else "" for line in lines]
     if not any(spans):  # an empty span would be two backticks of text

@@ -237,9 +237,9 @@ head -n 3 odd.jsonl >odd_part.jsonl
 # Issue 28, class 11: a NUL byte in a path the config gives cannot name the file meant, a file's
 # binary bytes are not echoed raw into a message.
 config 'nul\u0000.json' >nul.json
-refused 'a NUL byte in "report"' 'report "nul\\x00.json": holds a NUL byte' "$bin" run nul.json --quiet
+refused 'a NUL byte in "report"' 'report: "nul\\u0000.json" holds a NUL character' "$bin" run nul.json --quiet
 config r.json | sed 's#"report"#"runs": "nul\\u0000.jsonl", "report"#' >nul.json
-refused 'a NUL byte in "runs"' 'runs "nul\\x00.jsonl": holds a NUL byte' "$bin" run nul.json --quiet
+refused 'a NUL byte in "runs"' 'runs: "nul\\u0000.jsonl" holds a NUL character' "$bin" run nul.json --quiet
 rm -f nul.json
 { printf 'type octile\nheight \033[31m\377\376\001\n'; } >bin.map
 "$bin" plan --map bin.map --start 0,0 --goal 1,1 >out.txt 2>err.txt

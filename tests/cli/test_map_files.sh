@@ -111,6 +111,12 @@ bad_config movingai '["maps/nothing*.map"]'
 refused "a pattern matching nothing" 'files\[0\]: "maps/nothing\*.map" matches no file' sweep/bad.json
 bad_config movingai '["maps/absent.map"]'
 refused "a missing file" '"maps/absent.map" matches no file (no such file)' sweep/bad.json
+# A NUL in a name: glob() would read the shorter name (maps/m0.map, which exists); and the same
+# anywhere else in a config (a label).
+bad_config movingai '["maps/m0.map\u0000.txt"]'
+refused "a file name holding a NUL" 'generators\[0\].params.files\[0\]: "maps/m0.map\\u0000.txt" holds a NUL character' sweep/bad.json
+echo '{"planners": [{"name": "astar", "label": "a\u0000b"}], "report": "unused.json"}' >sweep/bad.json
+refused "a label holding a NUL" 'planners\[0\].label: "a\\u0000b" holds a NUL character' sweep/bad.json
 printf 'type octile\nheight 2\nwidth 2\nmap\n..\n.?\n' >sweep/maps/broken.map
 bad_config movingai '["maps/broken.map"]'
 refused "a malformed map line" 'sweep/maps/broken.map:6:' sweep/bad.json

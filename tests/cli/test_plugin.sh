@@ -4,7 +4,8 @@
 # so nothing can reach into the source or build tree), listed, and swept next to astar: every
 # path valid, gbfs never shorter than the optimal astar on the same map, its collision checks
 # counted by the engine, 1 and 2 threads and --isolate identical in every non-timing field, the
-# config's "plugins" and --plugin the same sweep, a resume refused once the plugin file changed.
+# config's "plugins" and --plugin the same sweep, a resume refused once the plugin file changed
+# (naming the plugin).
 # Then the broken plugins, each built here: another agvbench version, another plugin ABI, no
 # entry point, an unresolved symbol, a planner name of a built-in planner, a second plugin's
 # planner or plugin name, and a file that is no library: each exit 2 with a message naming it.
@@ -189,8 +190,10 @@ sed 's|"\.\./example-build/libgbfs_plugin.so"|"copy.so"|' sweep/config.json >swe
 "$bin" run sweep/copy.json --threads 1 --out copy.json --runs-out copy.jsonl --quiet || bad "copy run"
 printf 'x' >>sweep/copy.so
 "$bin" run sweep/copy.json --threads 1 --out copy2.json --resume copy.jsonl --quiet >resume.txt 2>&1
-[ $? -ne 0 ] && ok "resume refused after the plugin file changed ($(head -c 150 resume.txt))" ||
-  bad "resume accepted a changed plugin"
+rc=$?
+[ $rc -eq 2 ] && grep -q 'plugin "gbfs_plugin" (.*copy.so) changed since the journal was written (sha256 [0-9a-f]\{64\} then, [0-9a-f]\{64\} now)' resume.txt &&
+  ok "resume refused after the plugin file changed, naming it ($(head -c 150 resume.txt))" ||
+  bad "resume after the plugin changed: exit $rc, $(head -c 300 resume.txt)"
 
 # Broken plugins, built from one source: the ones that differ in a symbol (no entry point, an
 # unresolved one) by a definition each, the ones that differ in what they declare (ABI, version,

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "core/version.h"
 #include "engine/outputs/journal.h"
 #include "engine/outputs/journal_lines.h"
 #include "engine/outputs/report.h"
@@ -250,6 +251,46 @@ TEST(JournalVersion, RestoreRefusesAForeignOrMissingVersionNamingFileAndLine) {
   EXPECT_NE(refusal(other_config).find("edited.jsonl:1: journal was written by a different config"),
             std::string::npos);
   EXPECT_EQ(refusal(header), "no error");
+}
+
+TEST(JournalVersion, AResumeRefusesAJournalOfAnotherAgvbenchVersionAndAMergeTwoVersions) {
+  Scratch s("stamp");
+  const std::string text = journal_text(s);
+  const std::size_t second = text.find('\n') + 1;
+  json header = json::parse(text.substr(0, second - 1));
+  EXPECT_EQ(header.at("agvbench"), AGVBENCH_VERSION);
+  const SweepConfig config = small_config();
+  header["agvbench"] = "0.0.9";
+  const std::string older = s.path("older.jsonl");
+  const std::string older_text = header.dump() + "\n" + text.substr(second);
+  write_file(older, older_text);
+  // Read alone (its own report, an export): one version's runs, accepted.
+  SweepResults alone = empty_results(config);
+  EXPECT_GT(restore_journal(older, alone).records, 0);
+  // Resumed by this version: refused naming both, the journal as it was.
+  SweepOptions options;
+  options.threads = 1;
+  options.resume_path = older;
+  const std::string resumed = input_error([&] { run_sweep(config, options); });
+  EXPECT_NE(
+      resumed.find("older.jsonl:1: written by agvbench 0.0.9, this is agvbench " AGVBENCH_VERSION
+                   ": resuming would mix two versions' runs"),
+      std::string::npos)
+      << resumed;
+  EXPECT_EQ(read_file(older), older_text);
+  // Merged with a journal of this version: refused.
+  SweepResults both = empty_results(config);
+  const std::string merged = input_error([&] {
+    restore_journals({s.path("source.jsonl"), older}, both);
+  });
+  EXPECT_NE(merged.find("older.jsonl:1: written by agvbench 0.0.9, an earlier record by "
+                        "agvbench " AGVBENCH_VERSION),
+            std::string::npos)
+      << merged;
+  // A header from before the stamp was written by the one version there was.
+  header.erase("agvbench");
+  JournalDecoder decoder;
+  EXPECT_EQ(decoder.decode_line(header.dump(), "h").agvbench, kVersionBeforeStamps);
 }
 
 // The journal's lines, parsed.

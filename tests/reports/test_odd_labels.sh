@@ -8,7 +8,8 @@
 #  2. summary.md: every table row has its header's cells, and its planner cells, the headers
 #     naming the baseline and the list of planners read back (GFM's rules: a row splits at a pipe
 #     not after a backslash, code spans, backslash escapes) as exactly the labels, with nothing
-#     left unescaped that Markdown would read as markup;
+#     left unescaped that Markdown would read as markup, and no tag but <br> and <code> in the
+#     file (a label's HTML as entities, code spans included);
 #  3. html_report.py --runs: the embedded JSON holds no '<' (no label can end its <script> or
 #     keep it open) and reads back as the labels; no label with HTML syntax anywhere in the page
 #     as it is; the page's title escaped; with Debian's chromium (optional, one render): the page
@@ -92,8 +93,9 @@ def cells(line):
 
 
 def inline(text):
-    """What a Markdown reader shows for text made of code spans, backslash escapes, <br> and
-    plain characters; raises ValueError at anything it would read as markup instead."""
+    """What a Markdown reader shows for text made of code spans, <code> elements, backslash
+    escapes, the entities &lt; &gt; &amp;, <br> and plain characters; raises ValueError at
+    anything it would read as markup instead."""
     out, i = [], 0
     while i < len(text):
         c = text[i]
@@ -112,6 +114,15 @@ def inline(text):
         elif text.startswith("<br>", i):
             out.append("\n")
             i += 4
+        elif text.startswith("<code>", i):
+            end = text.find("</code>", i)
+            if end < 0:
+                raise ValueError(f"unclosed <code> at {i}: {text!r}")
+            out.append(inline(text[i + 6:end]))
+            i = end + 7
+        elif m := re.match(r"&(lt|gt|amp);", text[i:]):
+            out.append({"lt": "<", "gt": ">", "amp": "&"}[m.group(1)])
+            i += m.end()
         elif c == "\\" and i + 1 < len(text) and text[i + 1] in PUNCT:
             out.append(text[i + 1])
             i += 2
@@ -147,8 +158,17 @@ def tables(md):
     return out
 
 
+def no_raw_html(md, what):
+    """No tag but <br> and <code>, no entity but &lt; &gt; &amp; anywhere in the file, code
+    spans included: not every renderer honours a backslash escape or a code span."""
+    tags = set(re.findall(r"</?[A-Za-z!?][^\s>]*", md)) - {"<br", "<code", "</code"}
+    ents = set(re.findall(r"&[#A-Za-z0-9]+;", md)) - {"&lt;", "&gt;", "&amp;"}
+    check(not tags and not ents, f"{what}: no label's HTML as it is (not: {sorted(tags | ents)[:4]})")
+
+
 def summary(path, labels, name):
     md = open(path, encoding="utf-8").read()
+    no_raw_html(md, "summary.md")
     base = labels[0]
     found = tables(md)
     check(len(found) == 3, f"summary.md: 3 tables (got {len(found)})")
@@ -176,6 +196,7 @@ def summary(path, labels, name):
 
 def claims(path, labels):
     md = open(path, encoding="utf-8").read()
+    no_raw_html(md, "CLAIMS.md")
     found = tables(md)
     check(len(found) == 2 and all(len(c) == len(h) for h, rows, _ in found for c in rows),
           "CLAIMS.md: every row of its 2 tables has its header's cells")

@@ -9,6 +9,7 @@ import tempfile
 
 from agvreports.grouping import Report, split_list
 from agvreports.html_page import ASSETS, MARK, build_page, page_data, plotly_js
+from agvreports.output_guard import check_outputs
 from agvreports.report_io import BAD_INPUT, ReportError, load_report
 from agvreports.runs import load_runs
 
@@ -49,6 +50,12 @@ def main(doc, argv=None):
             sys.stderr.write(f"html_report.py: {args.runs}: {e}\n")
             return BAD_INPUT
     out = args.out
+    try:
+        check_outputs([("out", out)], [("report", args.report)] +
+                      ([("--runs", args.runs)] if args.runs else []))
+    except ReportError as e:
+        sys.stderr.write(f"html_report.py: {e}\n")
+        return BAD_INPUT
     if os.path.isdir(out):
         sys.stderr.write(f"html_report.py: {out}: is a directory, expected the HTML file to write\n")
         return BAD_INPUT

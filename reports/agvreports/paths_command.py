@@ -3,6 +3,7 @@
 import argparse
 import sys
 
+from agvreports.output_guard import check_outputs
 from agvreports.paths import draw
 from agvreports.plan_doc import check_plan
 from agvreports.report_io import BAD_INPUT, ReportError, load_json
@@ -17,6 +18,11 @@ def main(argv=None):
     ap.add_argument("--title", default=None, help="title (default: the map's cell, seed and index)")
     ap.add_argument("--small", action="store_true", help="write a palette PNG (for committed samples)")
     args = ap.parse_args(argv)
+    try:
+        check_outputs([("out", args.out)], [("plan", args.plan)])
+    except ReportError as e:
+        sys.stderr.write(f"plot_paths.py: {e}\n")
+        return BAD_INPUT
     try:
         plan = check_plan(load_json(args.plan))
     except ReportError as e:

@@ -9,6 +9,7 @@ import sys
 from agvreports.dist import plot_distributions, plot_ecdf
 from agvreports.figures import Saver, setup_matplotlib
 from agvreports.grouping import Report, split_list
+from agvreports.output_guard import check_output_folder
 from agvreports.paired import plot_paired
 from agvreports.plots import plot_metrics, plot_success, plot_time
 from agvreports.report_io import BAD_INPUT, ReportError, load_report
@@ -16,6 +17,11 @@ from agvreports.runs import load_runs
 from agvreports.summary import write_summary
 
 FORMATS = ("png", "pdf", "svg")
+
+
+def _may_write(name):
+    """Every name plot.py may write into its folder: a picture in any format, summary.md."""
+    return name == "summary.md" or name.endswith(tuple("." + f for f in FORMATS))
 
 
 def main(doc, argv=None):
@@ -49,6 +55,12 @@ def main(doc, argv=None):
     if args.dist == "violin" and not args.runs:
         sys.stderr.write("plot.py: --dist violin needs --runs RUNS.jsonl (a violin is drawn from "
                          "every run; the report holds summaries only)\n")
+        return BAD_INPUT
+    try:
+        check_output_folder("outdir", args.outdir, _may_write,
+                            [("report", args.report)] + ([("--runs", args.runs)] if args.runs else []))
+    except ReportError as e:
+        sys.stderr.write(f"plot.py: {e}\n")
         return BAD_INPUT
     try:
         doc = load_report(args.report)

@@ -11,6 +11,7 @@ from agvreports.claims.claims_file import DEFAULT_CLAIMS, SETUPS, check_claims_f
 from agvreports.claims.evaluate import evaluate
 from agvreports.claims.markdown import markdown, result_json
 from agvreports.claims.sources import Source
+from agvreports.output_guard import check_outputs
 from agvreports.report_io import BAD_INPUT, ReportError, load_json, load_report
 
 
@@ -25,6 +26,14 @@ def main(argv=None):
                     help="every report stands for this set-up of every claim, whatever its config name "
                          "(a sample sweep)")
     args = ap.parse_args(argv)
+    inputs = [("--claims", args.claims)] + \
+        [("journal" if p.endswith(".jsonl") else "report", p) for p in args.inputs]
+    outputs = [(opt, path) for opt, path in (("--out", args.out), ("--json", args.json)) if path]
+    try:
+        check_outputs(outputs, inputs)
+    except ReportError as e:
+        sys.stderr.write(f"check_claims.py: {e}\n")
+        return BAD_INPUT
     try:
         claims_doc = check_claims_file(load_json(args.claims))
     except ReportError as e:

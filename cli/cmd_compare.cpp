@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "core/input_error.h"
 #include "core/json_text.h"
 #include "engine/outputs/report_compare.h"
+#include "engine/outputs/sweep_identity.h"
 
 namespace agv {
 
@@ -32,6 +34,19 @@ struct CompareCommand {
 // compare --fail-on-regression: percent of planning time.
 constexpr NumberRange kRegressionPctRange{0.0, 1e6};
 
+// One side's journals: each of the report's config, together exactly the report's sweeps.
+void read_side_times(const std::vector<std::string>& journals, const nlohmann::json& report,
+                     const std::string& option, const std::string& report_name, RunTimes& times) {
+  std::set<std::string> sweep_ids;
+  std::string names;
+  for (const auto& j : journals) {
+    read_run_times(j, report_config_hash(report), times, sweep_ids);
+    names += (names.empty() ? "" : " ") + ("\"" + j + "\"");
+  }
+  require_same_sweeps(report_sweep_ids(report, report_name), sweep_ids, option + " " + names,
+                      report_name);
+}
+
 int command_compare(const CompareCommand& cmd) {
   if (cmd.runs_before.empty() != cmd.runs_after.empty())
     throw InputError(
@@ -46,9 +61,10 @@ int command_compare(const CompareCommand& cmd) {
     if (!before.is_object() || !before.contains("config") || !after.is_object() ||
         !after.contains("config"))
       throw InputError("BEFORE or AFTER is not an agvbench report (no \"config\")");
-    for (const auto& j : cmd.runs_before)
-      read_run_times(j, report_config_hash(before), times_before);
-    for (const auto& j : cmd.runs_after) read_run_times(j, report_config_hash(after), times_after);
+    read_side_times(cmd.runs_before, before, "--runs-before", "BEFORE \"" + cmd.before + "\"",
+                    times_before);
+    read_side_times(cmd.runs_after, after, "--runs-after", "AFTER \"" + cmd.after + "\"",
+                    times_after);
   }
   // A shape the checks of require_report do not cover is still bad input naming both files.
   const ReportComparison c = [&] {

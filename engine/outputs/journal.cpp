@@ -121,7 +121,10 @@ bool RecordRestorer::restore(const DecodedRecord& rec, const std::string& where)
   if (rec.config_hash != config_hash_)
     throw InputError(where + ": journal was written by a different config (hash " +
                      rec.config_hash + ", this config " + config_hash_ + ")");
-  if (rec.kind == DecodedRecord::Kind::header) return true;
+  if (rec.kind == DecodedRecord::Kind::header) {
+    results_.add_sweep(rec.sweep_id);
+    return true;
+  }
   const auto cell = cell_index_.find(rec.cell);
   if (cell == cell_index_.end()) throw InputError(where + ": unknown cell");
   const auto planner = planner_index_.find(rec.planner);
@@ -163,8 +166,15 @@ bool JournalRecordReader::next(DecodedRecord& record, std::string& where) {
     // Records are written whole, newline included: a complete line that does not parse is a
     // damaged journal, not a kill's doing.
     record = decoder_.decode_line(line, where);
-    stats_.has_header = record.kind == DecodedRecord::Kind::header ||
-                        (stats_.has_header && record.version != kJournalVersionV1);
+    // A segment from before sweep ids is not continued: a resume gives its runs a header with
+    // their sweep's id.
+    if (record.kind == DecodedRecord::Kind::header) {
+      stats_.has_header = !record.sweep_id.empty();
+      stats_.sweep_id = record.sweep_id;
+    } else if (record.version == kJournalVersionV1) {
+      stats_.has_header = false;
+      stats_.sweep_id.clear();
+    }
     return true;
   }
   // A torn tail (a last line without its newline, a gzip member cut short) was cut by a kill

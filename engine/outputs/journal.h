@@ -84,6 +84,7 @@ struct JournalStats {
   // Whether the file's last segment is a version 2 journal of this config (its header read):
   // a resume appends to it as it is; otherwise it first writes a header of its own.
   bool has_header = false;
+  std::string sweep_id;  // that last segment's sweep ("" when none: a resume starts a segment)
 };
 
 // Restores decoded records into a sweep's slots (shared by resume, merge, export and the

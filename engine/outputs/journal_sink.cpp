@@ -19,7 +19,8 @@ void JournalSink::start(const SweepStart& start) {
   // A resumed journal whose last segment is this sweep's goes on as it is; a new one, an empty
   // file, a version 1 journal or a header a kill cut short gets a header of its own.
   if (!start.restored.has_header)
-    writer_.write(journal_header(start.results.config_hash, start.config, start.results.plan));
+    writer_.write(journal_header(start.results.config_hash, start.config, start.results.plan,
+                                 start.results.sweep_id));
 }
 
 void JournalSink::task_done(const TaskRuns& runs) {

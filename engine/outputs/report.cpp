@@ -320,6 +320,7 @@ json report_frame(const SweepConfig& config, const SweepResults& r) {
         {"executed_runs", r.executed_runs},
         {"runs_per_s", r.wall_s > 0 ? static_cast<double>(r.executed_runs) / r.wall_s : 0.0}}}};
   if (r.shard_count > 1) report["shard"] = {{"index", r.shard_index}, {"count", r.shard_count}};
+  report["environment"]["sweep_ids"] = r.sweep_ids;  // engine/outputs/sweep_identity.h
   return report;
 }
 

@@ -344,9 +344,12 @@ std::string p_text(double p) {
 
 std::string report_config_hash(const json& report) { return config_hash_of(report.at("config")); }
 
-void read_run_times(const std::string& journal, const std::string& config_hash, RunTimes& times) {
+void read_run_times(const std::string& journal, const std::string& config_hash, RunTimes& times,
+                    std::set<std::string>& sweep_ids) {
   // A torn last line is a run resume would redo: skipped.
   for_each_journal_record(journal, [&](const DecodedRecord& rec, const std::string& where) {
+    if (rec.kind == DecodedRecord::Kind::header && !rec.sweep_id.empty())
+      sweep_ids.insert(rec.sweep_id);
     if (rec.kind == DecodedRecord::Kind::map) return;
     if (rec.config_hash != config_hash)
       throw InputError(where + ": a record of config " + rec.config_hash +

@@ -9,6 +9,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,10 +21,13 @@ namespace agv {
 // Planning times of one sweep's runs, by (cell key, planner label), then map index.
 using RunTimes = std::map<std::pair<std::string, std::string>, std::map<int, std::int64_t>>;
 
-// Reads the plan times of a journal's records into `times`. Throws InputError naming file:line
-// for a line that is not a record of this tool and journal version, or a record of a config
-// other than the report's (its hash `config_hash`). A torn last line is ignored, as by resume.
-void read_run_times(const std::string& journal, const std::string& config_hash, RunTimes& times);
+// Reads the plan times of a journal's records into `times`, and the sweep of each of its segments
+// that names one into `sweep_ids` (engine/outputs/sweep_identity.h). Throws InputError naming
+// file:line for a line that is not a record of this tool and journal version, or a record of a
+// config other than the report's (its hash `config_hash`). A torn last line is ignored, as by
+// resume.
+void read_run_times(const std::string& journal, const std::string& config_hash, RunTimes& times,
+                    std::set<std::string>& sweep_ids);
 
 // The config hash a report's config belongs to (the journals' `config_hash`).
 std::string report_config_hash(const nlohmann::json& report);

@@ -145,7 +145,7 @@ void rebuild_derived_metrics(RunMetrics& m, std::bitset<kRunMetricNames.size()> 
 }
 
 std::string journal_header(const std::string& config_hash, const SweepConfig& config,
-                           const SweepPlan& plan) {
+                           const SweepPlan& plan, const std::string& sweep_id) {
   // In this order (not sorted): what the file is first.
   using ordered = nlohmann::ordered_json;
   ordered cells = ordered::array();
@@ -177,6 +177,7 @@ std::string journal_header(const std::string& config_hash, const SweepConfig& co
                           {"agvbench", AGVBENCH_VERSION},
                           {"record", "header"},
                           {"config_hash", config_hash},
+                          {"sweep_id", sweep_id},
                           {"name", config.name},
                           {"seed", config.seed},
                           {"cells", cells},
@@ -363,6 +364,7 @@ DecodedRecord JournalDecoder::decode_header(const json& rec, const std::string& 
   h.config_hash = rec.at("config_hash").get<std::string>();
   if (const auto stamp = rec.find("agvbench"); stamp != rec.end())
     h.agvbench = stamp->get<std::string>();
+  if (const auto id = rec.find("sweep_id"); id != rec.end()) h.sweep_id = id->get<std::string>();
   for (const json& p : rec.value("plugins", json::array()))
     h.plugins.push_back({member(p, "name").get<std::string>(), member(p, "path").get<std::string>(),
                          member(p, "sha256").get<std::string>()});
@@ -394,6 +396,7 @@ DecodedRecord JournalDecoder::decode_header(const json& rec, const std::string& 
   out.kind = DecodedRecord::Kind::header;
   out.config_hash = header_->config_hash;
   out.agvbench = header_->agvbench;
+  out.sweep_id = header_->sweep_id;
   return out;
 }
 

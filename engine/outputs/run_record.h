@@ -61,7 +61,7 @@ RunSlot run_slot_of(const RunOutput& run);
 
 // The header line (newline included) of a journal of this sweep.
 std::string journal_header(const std::string& config_hash, const SweepConfig& config,
-                           const SweepPlan& plan);
+                           const SweepPlan& plan, const std::string& sweep_id);
 
 // A map record (one line, newline included).
 std::string map_record(const SweepCell& cell, int map_index, const MapFacts& facts);
@@ -91,6 +91,7 @@ struct JournalHeader {
     std::string sha256;
   };
   std::string config_hash;
+  std::string sweep_id;                         // engine/outputs/sweep_identity.h; "" before ids
   std::string agvbench = kVersionBeforeStamps;  // the version that wrote the segment
   std::vector<Cell> cells;
   std::vector<std::string> planners;  // labels
@@ -105,6 +106,7 @@ struct DecodedRecord {
   int version = kJournalVersion;
   std::string config_hash;                      // the record's (version 1) or its header's
   std::string agvbench = kVersionBeforeStamps;  // the agvbench version that wrote it
+  std::string sweep_id;                         // a header's sweep ("" before ids)
   std::string cell;                             // key (map and run records)
   int map_index = 0;
   std::string planner;  // label (run records)

@@ -11,6 +11,7 @@
 // its slots live in a CellResults of their own, so a cell can be summarised and released once
 // its runs are complete.
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -97,6 +98,14 @@ struct SweepResults {
   // tasks, the runs the sink lost are not counted as done and `complete` is false (the message
   // names the sink's file and the OS error).
   std::string sink_error;
+  // This run's sweep (engine/outputs/sweep_identity.h): drawn fresh, or the resumed journal's.
+  std::string sweep_id;
+  // Every sweep whose runs these results hold (sorted): this run's and a resume's or a merge's.
+  std::vector<std::string> sweep_ids;
+  void add_sweep(const std::string& id) {
+    const auto at = std::lower_bound(sweep_ids.begin(), sweep_ids.end(), id);
+    if (!id.empty() && (at == sweep_ids.end() || *at != id)) sweep_ids.insert(at, id);
+  }
 
   int maps_of(const SweepCell& cell, std::size_t planner) const {
     return cells[static_cast<std::size_t>(cell.index)].scoped_maps[planner];

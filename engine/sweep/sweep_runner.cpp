@@ -20,6 +20,7 @@
 #include "engine/outputs/journal.h"
 #include "engine/outputs/journal_sink.h"
 #include "engine/outputs/report.h"
+#include "engine/outputs/sweep_identity.h"
 #include "engine/sweep/map_task.h"
 
 namespace agv {
@@ -91,7 +92,8 @@ struct SweepState {
       : context(task_context),
         results(sweep_results),
         restorer(sweep_results),
-        header(journal_header(task_context.config_hash, task_context.config, task_context.plan)) {}
+        header(journal_header(task_context.config_hash, task_context.config, task_context.plan,
+                              sweep_results.sweep_id)) {}
 
   const MapTaskContext& context;
   SweepResults& results;
@@ -389,6 +391,9 @@ void run_sweep(const SweepConfig& config, SweepResults& res, const SweepOptions&
     restored = restore_journal_to_resume(options.resume_path, res, &restored_messages,
                                          options.release_cells ? &config : nullptr);
   res.restored_runs = restored.records;
+  // A resume goes on with its journal's last sweep; anything else is a sweep of its own.
+  res.sweep_id = restored.has_header ? restored.sweep_id : new_sweep_id();
+  res.add_sweep(res.sweep_id);
   // The journal is the first sink: what the others are handed is on disk first.
   std::optional<JournalSink> journal;
   if (!journal_path.empty()) journal.emplace(journal_path, resume);

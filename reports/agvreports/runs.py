@@ -86,6 +86,7 @@ class _Segment:
     def __init__(self, h, n):
         try:
             self.config_hash = h["config_hash"]
+            self.sweep_id = h.get("sweep_id") or None  # absent before sweep ids
             self.cells = [(c["cell"], float(c["cell_edge"])) for c in h["cells"]]
             self.planners = [p["label"] for p in h["planners"]]
             self.names = [p.get("name", p["label"]) for p in h["planners"]]
@@ -161,14 +162,14 @@ def _journal_lines(path):
             yield n, raw
 
 
-def journal_records(path):
+def journal_records(path, sweep_ids=None):
     """Yield (line number, run record) for each run of RUNS.jsonl, version 1 or 2, each in one
     shape: planner (label), cell (key), map_index, outcome, metrics (name -> value, derived
     ones rebuilt; a version 1 record's nulls kept), timing {plan_time_ns, phases}, config_hash,
     message. RUNS.jsonl.gz (gzip, `--runs-out RUNS.jsonl.gz`) is read as well. Raises ReportError
     naming the line; OSError and UnicodeDecodeError pass through to the caller. A torn tail (a
     last line without its newline, a gzip member cut short: a kill's) is skipped, as the engine
-    does."""
+    does. Each segment's sweep id, where its header names one, is added to the set `sweep_ids`."""
     segment = None
     for n, raw in _journal_lines(path):
         line = raw.strip()
@@ -187,6 +188,8 @@ def journal_records(path):
                 if r.get("record") != "header":
                     raise ReportError(f"line {n}: a version 2 record naming its version must be its header")
                 segment = _Segment(r, n)
+                if sweep_ids is not None and segment.sweep_id:
+                    sweep_ids.add(segment.sweep_id)
                 continue
             # A version 1 record: self-contained.
             for key in ("planner", "cell", "map_index", "outcome", "metrics"):
@@ -221,16 +224,31 @@ def config_hash(config):
     return f"{h:016x}"
 
 
-def load_runs(path, doc):
-    """Read RUNS.jsonl; every record must be an agvbench journal record of this version of the
-    report `doc`'s sweep: its config hash, cell and planner (a journal of another sweep, even of
-    a config of the same name, is refused)."""
+def check_sweeps(doc, sweep_ids):
+    """The journal's sweeps (the ids its segments name) must be exactly the report's
+    (environment.sweep_ids; engine/outputs/sweep_identity.h): another sweep of the same config
+    has the same config hash but other times. A report from before the ids is not checked."""
+    env = doc.get("environment")
+    want = env.get("sweep_ids") if isinstance(env, dict) else None
+    if not isinstance(want, list) or not want:
+        return
+    if set(sweep_ids) != set(want):
+        have = ", ".join(sorted(sweep_ids)) or "(none: written before sweep ids)"
+        raise ReportError(f"holds sweep {have}, but the report is of sweep {', '.join(sorted(want))}: "
+                          "not this report's journal (another sweep of the same config has other "
+                          "times; a merged report needs every shard's journal, concatenated)")
+
+
+def matched_records(path, doc):
+    """Yield (line number, run record) of RUNS.jsonl, every record checked to be of the report
+    `doc`'s sweep: its config hash, cell and planner, and at the end the journal's sweep ids
+    (a journal of another sweep, even of the same config, is refused). Raises ReportError."""
     want = config_hash(doc["config"]) if isinstance(doc.get("config"), dict) else None
     cells = {cell_key(c) for c in doc["cells"]}
     planners = {p["planner"] for c in doc["cells"] for p in c["planners"]}
-    runs = Runs(path)
+    sweep_ids = set()
     try:
-        for n, r in journal_records(path):
+        for n, r in journal_records(path, sweep_ids):
             if want is not None and r.get("config_hash") != want:
                 raise ReportError(f"line {n}: a record of config {r.get('config_hash')!r}, not of "
                                   f"the report's (hash {want!r}): the journal of another sweep")
@@ -240,10 +258,7 @@ def load_runs(path, doc):
             if r["planner"] not in planners:
                 raise ReportError(f"line {n}: planner {r['planner']!r} is not in the report "
                                   "(the journal of another sweep?)")
-            t = (r.get("timing") or {}).get("plan_time_ns") if isinstance(r.get("timing"), dict) else None
-            runs.by.setdefault(r["cell"], {}).setdefault(r["planner"], []).append(
-                (r["map_index"], r["outcome"], r["metrics"], t))
-            runs.count += 1
+            yield n, r
     except FileNotFoundError:
         raise ReportError("no such file") from None
     except IsADirectoryError:
@@ -252,6 +267,17 @@ def load_runs(path, doc):
         raise ReportError(f"not UTF-8 text ({e.reason})") from None
     except OSError as e:
         raise ReportError(f"cannot read: {e.strerror}") from None
+    check_sweeps(doc, sweep_ids)
+
+
+def load_runs(path, doc):
+    """Read RUNS.jsonl, the journal of the report `doc`'s sweep (matched_records)."""
+    runs = Runs(path)
+    for _, r in matched_records(path, doc):
+        t = (r.get("timing") or {}).get("plan_time_ns") if isinstance(r.get("timing"), dict) else None
+        runs.by.setdefault(r["cell"], {}).setdefault(r["planner"], []).append(
+            (r["map_index"], r["outcome"], r["metrics"], t))
+        runs.count += 1
     if runs.count == 0:
         raise ReportError("no records (an empty journal)")
     return runs

@@ -181,6 +181,14 @@ expect_exit "compare a report whose cell name is a number: exit 2" 2 "$bin" comp
 check "... naming the field" grep -q 'AFTER: cells\[0\].cell: expected a string' last.err
 expect_exit "--runs-before without --runs-after: exit 2" 2 "$bin" compare tiny1.json tiny2.json --runs-before tiny1.jsonl
 expect_exit "journals swapped with another config's: exit 2" 2 "$bin" compare tiny1.json tiny2.json --runs-before quick.jsonl --runs-after tiny2.jsonl
+# Issue 49, class 5: two sweeps of one config share the config hash but not their times; each
+# report names its sweep (environment.sweep_ids), each journal segment's header its own.
+expect_exit "journals of the other sweep of the same config: exit 2" 2 "$bin" compare tiny1.json tiny2.json --runs-before tiny2.jsonl --runs-after tiny1.jsonl
+check "... naming both sweeps" grep -q -- '--runs-before "tiny2.jsonl": holds sweep [0-9a-f]\{16\}, but BEFORE "tiny1.json" reports sweep [0-9a-f]\{16\}: not this report' last.err
+expect_exit "check_claims.py with the other sweep's journal: exit 2" 2 $py "$src/reports/check_claims.py" tiny1.json tiny2.jsonl
+check "... naming it" grep -q 'tiny2.jsonl: holds sweep [0-9a-f]\{16\}, but the report is of sweep' last.err
+expect_exit "plot.py --runs with the other sweep's journal: exit 2" 2 $py "$src/reports/plot.py" tiny1.json pictures --runs tiny2.jsonl
+check "... naming it, nothing drawn" sh -c "grep -q 'tiny2.jsonl: holds sweep' last.err && test ! -e pictures"
 expect_exit "--fail-on-regression -5: exit 2" 2 "$bin" compare tiny1.json tiny2.json --fail-on-regression -5
 
 # --version and list forms

@@ -39,6 +39,19 @@ code=$?
 $py "$same" full.json merged.json >/dev/null && ok "merged report equals the unsharded one" ||
   bad "merged report differs: $($py "$same" full.json merged.json)"
 
+# The merged report names the four shards' sweeps: their journals together are its journal, one
+# of them alone is not (issue 49, class 5).
+cat shard_0.jsonl shard_1.jsonl shard_2.jsonl shard_3.jsonl >all_shards.jsonl
+"$bin" compare merged.json merged.json --runs-before all_shards.jsonl --runs-after shard_0.jsonl \
+  shard_1.jsonl shard_2.jsonl shard_3.jsonl >/dev/null 2>err.txt &&
+  ok "compare a merged report with its shards' journals, concatenated or not" ||
+  bad "compare with the shards' journals: $(cat err.txt)"
+"$bin" compare merged.json merged.json --runs-before shard_0.jsonl --runs-after all_shards.jsonl \
+  >/dev/null 2>err.txt
+code=$?
+[ $code -eq 2 ] && grep -q 'holds sweep [0-9a-f]*, but BEFORE "merged.json" reports sweep [0-9a-f]*, [0-9a-f]*, [0-9a-f]*, [0-9a-f]*:' err.txt &&
+  ok "one shard's journal is not the merged report's (exit 2)" || bad "one shard's journal: exit $code, $(cat err.txt)"
+
 "$bin" merge shard_0.jsonl shard_1.jsonl shard_3.jsonl --config config.json --out partial.json \
   >partial.log
 code=$?

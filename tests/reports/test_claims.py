@@ -216,8 +216,11 @@ for rec in recs:
     t = rec["metrics"]["turns"]
     rec["metrics"]["key_points"] = None if t is None else t + 2
 p9, r9 = os.path.join(work, "p4.json"), os.path.join(work, "p4.jsonl")
+report9 = synth_report.aggregate(sp4, recs)
+for rec in recs:  # the journal of this report: check_claims.py matches its config hash
+    rec["config_hash"] = synth_report.config_hash(report9["config"])
 with open(p9, "w") as f:
-    json.dump(synth_report.aggregate(sp4, recs), f)
+    json.dump(report9, f)
 with open(r9, "w") as f:
     f.write("".join(json.dumps(rec) + "\n" for rec in recs))
 r = check([p9, r9])["004-T2-fusion-vs-astar-dwa-turns"]
@@ -276,6 +279,8 @@ with open(foreign, "w") as f:
     f.write('{"tool": "agvbench", "journal_version": 0, "planner": "astar", "cell": "c", '
             '"map_index": 0, "outcome": "success", "metrics": {}}\n')
 bad("foreign journal version", [p1, foreign], "journal_version 0; this script reads")
+# Another report's journal (another config): refused by its config hash (issue 49, class 5).
+bad("another config's journal", [p1, r9], "not of the report's (hash")
 
 print(f"{passes} passed, {failures} failed")
 sys.exit(1 if failures else 0)

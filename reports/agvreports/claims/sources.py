@@ -8,7 +8,7 @@ import os
 
 from agvreports.numeric import finite
 from agvreports.report_io import ReportError, baseline_label
-from agvreports.runs import journal_records
+from agvreports.runs import matched_records
 
 
 class Source:
@@ -39,14 +39,11 @@ class Source:
 
     def attach_runs(self, path):
         records = []
-        try:
-            for _, r in journal_records(path):
-                # Keep only what the comparisons read (paper sweeps have many records).
-                records.append({"planner": r["planner"], "cell": r["cell"], "map_index": r["map_index"],
-                                "outcome": r["outcome"], "metrics": r["metrics"],
-                                "timing": {"plan_time_ns": (r.get("timing") or {}).get("plan_time_ns")}})
-        except OSError as e:
-            raise ReportError(f"cannot read: {e.strerror}") from None
+        for _, r in matched_records(path, self.doc):
+            # Keep only what the comparisons read (paper sweeps have many records).
+            records.append({"planner": r["planner"], "cell": r["cell"], "map_index": r["map_index"],
+                            "outcome": r["outcome"], "metrics": r["metrics"],
+                            "timing": {"plan_time_ns": (r.get("timing") or {}).get("plan_time_ns")}})
         self.runs_path = path
         self.runs = records
         self._by_cell = {}

@@ -17,7 +17,12 @@
 // iteration multiplies scale only, a deposit adds Q / L / scale to `stored`, and each cell caches
 // stored^alpha * eta^beta (a uniform factor cancels in the roulette); only deposits recompute a
 // cell's weight. Cells are initialised lazily, by a per-plan stamp, on first sight.
+//
+// What an ant's step reads of each neighbour (its weight and both stamps) is one 16-byte entry,
+// four to a cache line; what only first sight and deposits touch lives apart: a walk's loads
+// stay in the cache on maps whose whole state would not.
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -25,6 +30,7 @@
 
 #include "algos/search/grid_search_params.h"
 #include "algos/search/heuristics.h"
+#include "core/cell_blocks.h"
 #include "core/corner_rule.h"
 #include "core/line_of_sight.h"
 
@@ -38,16 +44,22 @@ constexpr double kRenormaliseBelow = 1e-30;
 // Deadline poll period in ant steps; a power of two.
 constexpr std::int64_t kStepDeadlineInterval = 1024;
 
-struct AcoCell {
-  double stored = 0.0;      // pheromone / scale
-  double eta_pow = 0.0;     // eta^beta
+// Per padded cell, what every ant step reads.
+struct AcoHot {
   double weight = 0.0;      // stored^alpha * eta^beta
-  std::uint32_t seen = 0;   // == plan stamp: the fields above belong to this plan
+  std::uint32_t seen = 0;   // == plan stamp: this entry and the cell's AcoCold belong to this plan
   std::uint32_t visit = 0;  // == ant stamp: visited by the current ant
 };
 
+// Per padded cell, what first sight and deposits use.
+struct AcoCold {
+  double stored = 0.0;   // pheromone / scale
+  double eta_pow = 0.0;  // eta^beta
+};
+
 struct AcoScratch {
-  std::vector<AcoCell> cells;  // padded grid
+  std::vector<AcoHot> hot;  // padded grid
+  std::vector<AcoCold> cold;
   std::uint32_t plan_stamp = 0;
   std::uint32_t ant_stamp = 0;
   std::vector<int> walk;     // the current ant's cells
@@ -78,16 +90,27 @@ class Colony {
         goal_(request.grid.index(request.goal)),
         fresh_stored_(settings.initial_pheromone) {
     const auto size = static_cast<std::size_t>(grid_.padded_size());
-    if (s_.cells.size() < size) {
-      s_.cells.assign(size, AcoCell{});
+    if (s_.hot.size() < size) {
+      s_.hot.assign(size, AcoHot{});
+      s_.cold.assign(size, AcoCold{});
       s_.plan_stamp = 0;
       s_.ant_stamp = 0;
     }
     if (++s_.plan_stamp == 0) {
-      for (AcoCell& c : s_.cells) c.seen = 0;
+      for (AcoHot& c : s_.hot) c.seen = 0;
       s_.plan_stamp = 1;
     }
     for (int d = 0; d < 8; ++d) offset_[d] = kDx[d] + kDy[d] * grid_.stride();
+    // A cell's 3x3 block mask (core/cell_blocks.h: one load) to the moves the rule allows.
+    constexpr std::uint32_t kBlockOf[8] = {kBlockRight,  kBlockDown,      kBlockLeft,
+                                           kBlockUp,     kBlockDownRight, kBlockDownLeft,
+                                           kBlockUpLeft, kBlockUpRight};
+    const MoveTable& moves = move_table(settings.rule);
+    for (unsigned m = 0; m < 256; ++m) {
+      unsigned free_mask = 0;
+      for (int d = 0; d < 8; ++d) free_mask |= static_cast<unsigned>((m & kBlockOf[d]) == 0) << d;
+      allowed_[m] = moves[free_mask];
+    }
   }
 
   // Returns false when the deadline passed.
@@ -128,93 +151,96 @@ class Colony {
   enum class WalkEnd { goal, dead_end, deadline };
   static constexpr double kInfinity = 1e300;
 
-  AcoCell& cell(int index) {
-    AcoCell& c = s_.cells[static_cast<std::size_t>(index)];
-    if (c.seen != s_.plan_stamp) {
-      const Cell at = grid_.cell_of(index);
-      const double d = std::hypot(at.x - request_.goal.x, at.y - request_.goal.y);
-      c.seen = s_.plan_stamp;
-      c.stored = fresh_stored_;
-      c.eta_pow = d > 0.0 ? std::pow(1.0 / d, settings_.beta) : 0.0;  // the goal: never scored
-      c.weight = std::pow(c.stored, settings_.alpha) * c.eta_pow;
-    }
-    return c;
+  // The cell's weight, its entries set up on first sight this plan.
+  double weight(int index) {
+    AcoHot& h = s_.hot[static_cast<std::size_t>(index)];
+    if (h.seen != s_.plan_stamp) [[unlikely]]
+      first_sight(index);
+    return h.weight;
+  }
+
+  [[gnu::noinline]] void first_sight(int index) {
+    AcoHot& h = s_.hot[static_cast<std::size_t>(index)];
+    AcoCold& c = s_.cold[static_cast<std::size_t>(index)];
+    const Cell at = grid_.cell_of(index);
+    const double d = std::hypot(at.x - request_.goal.x, at.y - request_.goal.y);
+    h.seen = s_.plan_stamp;
+    c.stored = fresh_stored_;
+    c.eta_pow = d > 0.0 ? std::pow(1.0 / d, settings_.beta) : 0.0;  // the goal: never scored
+    h.weight = std::pow(c.stored, settings_.alpha) * c.eta_pow;
   }
 
   void next_ant() {
     if (++s_.ant_stamp == 0) {
-      for (AcoCell& c : s_.cells) c.visit = 0;
+      for (AcoHot& c : s_.hot) c.visit = 0;
       s_.ant_stamp = 1;
     }
   }
 
+  // Every ant step scans all 8 directions without a data-dependent branch but the rare first
+  // sight of a cell and the goal: the moves the corner rule allows and the ant has not made are
+  // packed in direction order with the running sum of their weights, as the original scan added
+  // them (so `total` and each prefix are the same doubles), and the roulette counts the prefixes
+  // at or below its draw instead of stopping at the first above it.
   WalkEnd walk(int start, double& length) {
     next_ant();
     s_.walk.clear();
     s_.walk.push_back(start);
-    s_.cells[static_cast<std::size_t>(start)].visit = s_.ant_stamp;
-    const std::uint8_t* occupancy = grid_.occupancy();
-    const MoveTable& moves = move_table(settings_.rule);
+    AcoHot* hot = s_.hot.data();
+    const std::uint32_t ant = s_.ant_stamp;
+    const std::uint32_t plan = s_.plan_stamp;
+    hot[start].visit = ant;
+    const std::uint32_t* blocks = grid_.cell_blocks().masks();
     int at = start;
     for (;;) {
       if (steps_ % kStepDeadlineInterval == 0 && request_.deadline.expired())
         return WalkEnd::deadline;
-      std::uint8_t free_mask = 0;
-      for (int d = 0; d < 8; ++d)
-        if (occupancy[at + offset_[d]] == 0)
-          free_mask = static_cast<std::uint8_t>(free_mask | 1U << d);
+      const unsigned allowed_moves = allowed_[blocks[at] & 0xFFU];
       cell_tests_ += 8;
-      const std::uint8_t allowed = moves[free_mask];
-      int next = -1;
-      int next_dir = -1;
-      int count = 0;
-      int candidate[8];
       int candidate_dir[8];
-      double weight[8];
+      double prefix[8];
       double total = 0.0;
-      for (int d = 0; d < 8 && next < 0; ++d) {
-        if (!(allowed & (1U << d))) continue;
+      int count = 0;
+      int goal_dir = -1;
+      // In direction order, as the roulette reads them; the goal ends the scan.
+      for (unsigned allowed = allowed_moves; allowed != 0; allowed &= allowed - 1) {
+        const int d = std::countr_zero(allowed);
         const int n = at + offset_[d];
         if (n == goal_) {
-          next = n;
-          next_dir = d;
-        } else if (s_.cells[static_cast<std::size_t>(n)].visit != s_.ant_stamp) {
-          candidate[count] = n;
-          candidate_dir[count] = d;
-          weight[count] = cell(n).weight;
-          total += weight[count];
-          ++count;
+          goal_dir = d;
+          break;
         }
+        if (hot[n].visit == ant) continue;
+        total += weight(n);
+        candidate_dir[count] = d;
+        prefix[count] = total;
+        ++count;
       }
-      if (next < 0) {
+      int next_dir = goal_dir;
+      if (goal_dir < 0) {
         if (count == 0) return WalkEnd::dead_end;
-        int pick = count - 1;
-        if (count > 1) {
-          if (total > 0.0 && std::isfinite(total)) {
-            // Roulette wheel: P(k) = weight[k] / total.
-            const double r = request_.rng.uniform01() * total;
-            double sum = 0.0;
-            for (int k = 0; k < count; ++k) {
-              sum += weight[k];
-              if (r < sum) {
-                pick = k;
-                break;
-              }
-            }
-          } else {
-            pick = static_cast<int>(request_.rng.below(static_cast<std::uint32_t>(count)));
-          }
-        }
-        next = candidate[pick];
-        next_dir = candidate_dir[pick];
+        next_dir = candidate_dir[count > 1 ? roulette(prefix, count, total) : 0];
       }
+      const int next = at + offset_[next_dir];
       ++steps_;
       length += is_diagonal(next_dir) ? kSqrt2 : 1.0;
       s_.walk.push_back(next);
       if (next == goal_) return WalkEnd::goal;
-      s_.cells[static_cast<std::size_t>(next)].visit = s_.ant_stamp;
+      hot[next].visit = ant;
       at = next;
     }
+  }
+
+  // Roulette wheel over count > 1 candidates with running sums `prefix` (the last is `total`):
+  // P(k) = weight[k] / total, the first k whose running sum exceeds the draw; uniform when the
+  // weights cannot be used (all zero, or their sum overflowed).
+  int roulette(const double* prefix, int count, double total) {
+    if (!(total > 0.0 && std::isfinite(total)))
+      return static_cast<int>(request_.rng.below(static_cast<std::uint32_t>(count)));
+    const double r = request_.rng.uniform01() * total;
+    for (int k = 0; k < count; ++k)
+      if (r < prefix[k]) return k;
+    return count - 1;
   }
 
   void update_pheromone() {
@@ -223,18 +249,20 @@ class Colony {
     for (std::size_t w = 0; w < s_.arrived_end.size(); ++w) {
       const double deposit = settings_.q / s_.arrived_length[w] / scale_;
       for (std::size_t i = begin; i < s_.arrived_end[w]; ++i) {
-        AcoCell& c = cell(s_.arrived[i]);
+        const auto index = static_cast<std::size_t>(s_.arrived[i]);
+        weight(s_.arrived[i]);  // sets a cell first seen now up
+        AcoCold& c = s_.cold[index];
         c.stored += deposit;
-        c.weight = std::pow(c.stored, settings_.alpha) * c.eta_pow;
+        s_.hot[index].weight = std::pow(c.stored, settings_.alpha) * c.eta_pow;
       }
       begin = s_.arrived_end[w];
     }
     if (scale_ < kRenormaliseBelow) {
       const double factor = std::pow(scale_, settings_.alpha);
-      for (AcoCell& c : s_.cells) {
-        if (c.seen != s_.plan_stamp) continue;
-        c.stored *= scale_;
-        c.weight *= factor;
+      for (std::size_t i = 0; i < s_.hot.size(); ++i) {
+        if (s_.hot[i].seen != s_.plan_stamp) continue;
+        s_.cold[i].stored *= scale_;
+        s_.hot[i].weight *= factor;
       }
       fresh_stored_ *= scale_;
       scale_ = 1.0;
@@ -247,6 +275,7 @@ class Colony {
   AcoScratch& s_;
   const int goal_;
   int offset_[8] = {};
+  std::uint8_t allowed_[256] = {};  // block mask (low 8 bits) -> allowed moves
   double scale_ = 1.0;
   double fresh_stored_;  // `stored` of a cell first seen now (initial pheromone / scale history)
   double best_length_ = kInfinity;

@@ -91,11 +91,22 @@ void RrtTree::rebucket(double side) {
     stamp_ = 1;
   }
   next_in_bucket_.clear();
+  box_x0_ = buckets_x_;
+  box_x1_ = -1;
+  box_y0_ = buckets_y_;
+  box_y1_ = -1;
   for (int node = 0; node < size(); ++node) link(node);
 }
 
 void RrtTree::link(int node) {
-  const auto b = static_cast<std::size_t>(bucket_of(points_[static_cast<std::size_t>(node)]));
+  const int bucket = bucket_of(points_[static_cast<std::size_t>(node)]);
+  const int bx = bucket % buckets_x_;
+  const int by = bucket / buckets_x_;
+  box_x0_ = std::min(box_x0_, bx);
+  box_x1_ = std::max(box_x1_, bx);
+  box_y0_ = std::min(box_y0_, by);
+  box_y1_ = std::max(box_y1_, by);
+  const auto b = static_cast<std::size_t>(bucket);
   next_in_bucket_.push_back(bucket_stamp_[b] == stamp_ ? bucket_head_[b] : -1);
   bucket_head_[b] = node;
   bucket_stamp_[b] = stamp_;
@@ -154,8 +165,11 @@ int RrtTree::nearest_in_buckets(Point q) const {
       }
     }
   };
-  const int max_ring = std::max(buckets_x_, buckets_y_);
-  for (int r = 0; r <= max_ring; ++r) {
+  // Rings (Chebyshev distance in buckets from q's) that meet the occupied box: below the first,
+  // past the last, every bucket is empty.
+  const int first_ring = std::max({0, box_x0_ - bx0, bx0 - box_x1_, box_y0_ - by0, by0 - box_y1_});
+  const int last_ring = std::max({bx0 - box_x0_, box_x1_ - bx0, by0 - box_y0_, box_y1_ - by0});
+  for (int r = first_ring; r <= last_ring; ++r) {
     if (best >= 0) {
       // Every unscanned node lies outside the square of rings 0..r-1: at least this far from q.
       const double lo_x = (bx0 - r + 1) * bucket_side_;
@@ -165,16 +179,17 @@ int RrtTree::nearest_in_buckets(Point q) const {
       const double gap = std::min({q.x - lo_x, hi_x - q.x, q.y - lo_y, hi_y - q.y});
       if (gap >= 0.0 && best_d2 <= gap * gap) break;
     }
-    const int y_lo = std::max(by0 - r, 0);
-    const int y_hi = std::min(by0 + r, buckets_y_ - 1);
-    const int x_lo = std::max(bx0 - r, 0);
-    const int x_hi = std::min(bx0 + r, buckets_x_ - 1);
+    // The ring's buckets inside the occupied box (which lies within the map's buckets).
+    const int y_lo = std::max(by0 - r, box_y0_);
+    const int y_hi = std::min(by0 + r, box_y1_);
+    const int x_lo = std::max(bx0 - r, box_x0_);
+    const int x_hi = std::min(bx0 + r, box_x1_);
     for (int by = y_lo; by <= y_hi; ++by) {
       if (by == by0 - r || by == by0 + r) {
         for (int bx = x_lo; bx <= x_hi; ++bx) scan(bx, by);
       } else {
-        if (bx0 - r >= 0) scan(bx0 - r, by);
-        if (r > 0 && bx0 + r < buckets_x_) scan(bx0 + r, by);
+        if (bx0 - r >= box_x0_) scan(bx0 - r, by);
+        if (r > 0 && bx0 + r <= box_x1_) scan(bx0 + r, by);
       }
     }
   }

@@ -11,7 +11,11 @@
 //            index. The bucket side adapts to the tree: it starts with about 16 buckets over
 //            the map and halves whenever the tree outgrows two nodes per bucket (all nodes are
 //            relinked, amortised O(1) per node), so a typical query scans a few buckets
-//            whatever the map and tree sizes. Reset per plan by a stamp, no clearing.
+//            whatever the map and tree sizes. Reset per plan by a stamp, no clearing. The
+//            buckets the tree occupies are bounded by a box (in bucket coordinates): a query
+//            starts at the first ring that meets it, scans only the part of each ring inside
+//            it and stops at the last ring that meets it. A sample far from a young tree (most
+//            of RRT's samples on an open map) no longer scans the empty rings between them.
 //   kdtree   nanoflann's KDTreeSingleIndexDynamicAdaptor (a logarithmic set of static k-d
 //            trees, rebuilt as points are added). Exact; ties as nanoflann resolves them.
 // Both return a nearest node; they can differ only on exact distance ties.
@@ -94,6 +98,8 @@ class RrtTree {
   int height_ = 0;
   int buckets_x_ = 0;
   int buckets_y_ = 0;
+  // The box of the buckets that hold a node (valid once a node is linked).
+  int box_x0_ = 0, box_x1_ = -1, box_y0_ = 0, box_y1_ = -1;
   // kdtree
   std::unique_ptr<KdIndex> kd_;
 };

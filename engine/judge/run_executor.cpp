@@ -12,12 +12,14 @@
 #include "engine/judge/result_check.h"
 #include "engine/judge/trajectory_judge.h"
 #include "engine/judge/validator.h"
+#include "engine/system/phase_clock.h"
 
 namespace agv {
 
 std::optional<double> MapReference::optimal_length(CornerRule rule, Scratch& scratch) {
   const auto r = static_cast<std::size_t>(rule);
   if (!known_[r]) {
+    const PhaseScope timed(EnginePhase::reference);
     optimal_[r] = shortest_length(grid_, start_, goal_, rule, scratch);
     known_[r] = true;
   }
@@ -26,6 +28,7 @@ std::optional<double> MapReference::optimal_length(CornerRule rule, Scratch& scr
 
 std::optional<double> MapReference::any_angle_length(Scratch& scratch) {
   if (!any_angle_known_) {
+    const PhaseScope timed(EnginePhase::reference);
     any_angle_ = agv::any_angle_length(grid_, start_, goal_, model_.corner_rule,
                                        scratch.get<AnyAngleScratch>());
     any_angle_known_ = true;
@@ -41,6 +44,7 @@ bool call_planner(const Planner& planner, const PlanRequest& request, RunOutput&
   try {
     out.result = plan_checked(planner, request);
     out.plan_time_ns = thread_cpu_ns() - t0;
+    add_phase_time(EnginePhase::planner, out.plan_time_ns);
     return true;
   } catch (const std::bad_alloc&) {
     out.outcome = Outcome::oom;
@@ -53,6 +57,7 @@ bool call_planner(const Planner& planner, const PlanRequest& request, RunOutput&
     out.message = "planner threw a non-standard exception";
   }
   out.plan_time_ns = thread_cpu_ns() - t0;
+  add_phase_time(EnginePhase::planner, out.plan_time_ns);
   return false;
 }
 
@@ -113,6 +118,7 @@ RunOutput execute_run(const Planner& planner, MapReference& map, Rng& rng, Scrat
   out.metrics.fill(std::numeric_limits<double>::quiet_NaN());
   const PlanRequest request{map.grid(), map.start(), map.goal(), rng, scratch, deadline};
   if (!call_planner(planner, request, out)) return out;
+  const PhaseScope timed(EnginePhase::judge);
   std::string why = result_contract_problem(out.result);
   if (why.empty()) why = phase_time_problem(out.result, out.plan_time_ns);
   if (!why.empty()) {

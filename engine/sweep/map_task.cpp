@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "engine/sweep/single_map.h"
+#include "engine/system/phase_clock.h"
 
 namespace agv {
 
@@ -90,7 +91,10 @@ MapFacts run_map_task(const MapTaskContext& context, std::int64_t task,
                       const std::function<void(const MapTaskRun&)>& on_run) {
   const SweepCell& cell = context.plan.cell_of(task);
   const int map_index = context.plan.map_index_of(task);
-  const TaskMap map = make_task_map(context, task);
+  const TaskMap map = [&] {
+    const PhaseScope timed(EnginePhase::map);
+    return make_task_map(context, task);
+  }();
   const MapSlot& slot = map.slot;
   // Shared by the task's runs: the optimal lengths are computed once per corner rule.
   MapReference ref(*map.grid, map.start, map.goal, context.config.collision);
@@ -101,6 +105,7 @@ MapFacts run_map_task(const MapTaskContext& context, std::int64_t task,
     const RunOutput out = run_on_map(*workspace.planners.at(p).planner, ref, context.config.seed,
                                      cell.key, map_index, entry.label, workspace.scratch,
                                      Deadline::after(context.budget), context.config.motion);
+    const PhaseScope timed(EnginePhase::record);
     on_run(MapTaskRun{context, task, p, slot, out, ref});
   }
   return map_facts_of(slot, ref);

@@ -12,6 +12,7 @@
 #include "engine/plan/sweep_config.h"
 #include "engine/plan/sweep_plan.h"
 #include "engine/sweep/sweep_runner.h"
+#include "engine/system/phase_clock.h"
 #include "generators/registry.h"
 #include "tests/engine/config_error.h"
 #include "tests/test_size.h"
@@ -52,6 +53,34 @@ std::string deterministic_text(const SweepConfig& config, int threads, const std
   const SweepResults r = run_sweep(config, options);
   EXPECT_EQ(r.threads, threads);
   return deterministic_part(build_report(config, r)).dump(1);
+}
+
+// perf/bench_sweep's breakdown (engine/system/phase_clock.h): off, it counts nothing; on, its
+// planner phase is exactly the runs' own planning times, and every engine phase has run.
+TEST(PhaseClock, CountsThePlannersTimesExactlyAndNothingWhenOff) {
+  const SweepConfig config = reduced_default(3, false);
+  SweepOptions options;
+  options.threads = 2;
+  reset_phase_clock();
+  run_sweep(config, options);
+  for (const std::int64_t ns : phase_clock_totals()) EXPECT_EQ(ns, 0);
+  enable_phase_clock(true);
+  const SweepResults r = run_sweep(config, options);
+  enable_phase_clock(false);
+  const PhaseTotals t = phase_clock_totals();
+  std::int64_t plan_ns = 0;
+  for (const CellResults& cell : r.cells)
+    for (const RunSlot& slot : cell.runs)
+      if (slot.done) plan_ns += slot.plan_time_ns;
+  const auto at = [&t](EnginePhase p) { return t[static_cast<std::size_t>(p)]; };
+  EXPECT_EQ(at(EnginePhase::planner), plan_ns);
+  EXPECT_GT(at(EnginePhase::map), 0);
+  EXPECT_GT(at(EnginePhase::reference), 0);
+  EXPECT_GT(at(EnginePhase::record), 0);
+  // The references are computed while a run is judged: inside the judge phase.
+  EXPECT_GE(at(EnginePhase::judge), at(EnginePhase::reference));
+  reset_phase_clock();
+  for (const std::int64_t ns : phase_clock_totals()) EXPECT_EQ(ns, 0);
 }
 
 TEST(Sweep, ReportIsIdenticalOnOneAndTwoThreads) {

@@ -9,6 +9,10 @@
 // tree): the subreaper needs no privilege and no set-up, and a worker killed with SIGKILL
 // (its hard limit) cannot escape it, since the orphans go to agvbench whatever killed their
 // parent. A process that double-forks before its parent dies is adopted the same way.
+// Only children outside agvbench's own process group are taken for strays: workers are spawned
+// in groups of their own, so all they leave behind is outside it, while a child a program
+// embedding the engine started itself stays in the program's group and is left alone (one it
+// moved to a group or session of its own is not told apart from a stray).
 
 #include <sys/types.h>
 
@@ -23,8 +27,9 @@ class LiveWorkers {
  public:
   static void add(pid_t pid);
   static void remove(pid_t pid);
-  // Kills (SIGKILL) and reaps every child of this process that is not a registered worker,
-  // until none is left (a killed stray's own children are handed to us in turn).
+  // Kills (SIGKILL) and reaps every child of this process outside its process group that is
+  // not a registered worker, until none is left (a killed stray's own children are handed to us in
+  // turn).
   static void kill_strays();
   // Holds the registry while a worker is spawned and registered.
   class SpawnLock {

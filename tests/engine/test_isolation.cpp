@@ -2,6 +2,7 @@
 // `--isolate`-style worker processes (this binary is its own worker). Each fault costs exactly
 // one run, recorded with its outcome within 1.25x the hard limit; every other run is present.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -21,6 +22,7 @@
 #include "engine/plan/config_loader.h"
 #include "engine/sweep/isolated_worker.h"
 #include "engine/sweep/sweep_runner.h"
+#include "engine/system/stray_children.h"
 
 #if AGV_SANITIZED_BUILD  // tests/CMakeLists.txt: ASan, TSan or the fuzz tree, GCC or clang
 constexpr bool kSanitized = true;  // sanitizers reserve terabytes of address space: no RLIMIT_AS
@@ -273,6 +275,37 @@ TEST(Isolation, AWorkersChildrenDieWithIt) {
   }
   EXPECT_EQ(children, 4);
   fs::remove_all(dir);
+}
+
+// engine/system/stray_children.h: a child that left this process's group (setsid(), as a stray
+// of a worker does) is killed and reaped; a child in the group (one a program embedding the
+// engine started itself) is left alone.
+TEST(Isolation, StraysOutsideOurGroupAreKilledOurOwnChildrenAreNot) {
+  const pid_t own = ::fork();
+  if (own == 0) {
+    ::pause();
+    ::_exit(0);
+  }
+  int ready[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  const pid_t stray = ::fork();
+  if (stray == 0) {
+    ::setsid();
+    const char c = 'x';
+    (void)!::write(ready[1], &c, 1);
+    ::pause();
+    ::_exit(0);
+  }
+  char c = 0;
+  ASSERT_EQ(::read(ready[0], &c, 1), 1);  // the stray has left our group
+  ::close(ready[0]);
+  ::close(ready[1]);
+  LiveWorkers::kill_strays();
+  int status = 0;
+  EXPECT_EQ(::waitpid(stray, &status, WNOHANG), -1);  // reaped already
+  EXPECT_EQ(::waitpid(own, &status, WNOHANG), 0);     // still running
+  ::kill(own, SIGKILL);
+  ::waitpid(own, &status, 0);
 }
 
 TEST(Isolation, ThrowIsACrashEvenWithoutIsolation) {

@@ -161,6 +161,41 @@ double DistanceTransform::search(Point a, Point b, Candidate* cells, int count,
   return best;
 }
 
+// An obstacle square closer than `below` to the segment meets its bounding box grown by `below`.
+// When that box is small (a polyline's later segments, once its least clearance so far is
+// tight), scanning it costs less than the candidate cells' sort and annuli; false when it is
+// not small. The margins (one cell low, kBoxSlack high) only ever add squares, and a square
+// whose box gap exceeds the best so far by kBoxSlack cannot beat it whatever the rounding: the
+// result is the exact min(below, clearance) that search() gives.
+bool DistanceTransform::box_search(Point a, Point b, double below, double& best) const {
+  constexpr double kMaxReach = 4.0;
+  constexpr int kMaxBoxCells = 36;
+  constexpr double kBoxSlack = 1e-6;
+  if (!(below < kMaxReach)) return false;
+  const double min_x = std::min(a.x, b.x);
+  const double max_x = std::max(a.x, b.x);
+  const double min_y = std::min(a.y, b.y);
+  const double max_y = std::max(a.y, b.y);
+  const double reach = below + kBoxSlack;
+  const int x0 = std::max(-1, static_cast<int>(std::floor(min_x - reach)) - 1);
+  const int x1 = std::min(width_, static_cast<int>(std::floor(max_x + reach)));
+  const int y0 = std::max(-1, static_cast<int>(std::floor(min_y - reach)) - 1);
+  const int y1 = std::min(height_, static_cast<int>(std::floor(max_y + reach)));
+  if ((x1 - x0 + 1) * (y1 - y0 + 1) > kMaxBoxCells) return false;
+  best = below;
+  for (int y = y0; y <= y1; ++y) {
+    const std::uint8_t* row = blocked_.data() + static_cast<std::size_t>(index(0, y));
+    const double gap_y = std::max({y - max_y, 0.0, min_y - (y + 1.0)});
+    for (int x = x0; x <= x1; ++x) {
+      if (!row[x]) continue;
+      const double gap_x = std::max({x - max_x, 0.0, min_x - (x + 1.0)});
+      if (std::max(gap_x, gap_y) > best + kBoxSlack) continue;
+      best = std::min(best, segment_cell_distance(a, b, Cell{x, y}));
+    }
+  }
+  return true;
+}
+
 double DistanceTransform::clearance(Point p) const { return segment_clearance(p, p); }
 
 double DistanceTransform::segment_clearance(Point a, Point b, double below) const {
@@ -169,6 +204,7 @@ double DistanceTransform::segment_clearance(Point a, Point b, double below) cons
     return p.x >= 0.0 && p.y >= 0.0 && p.x <= width_ && p.y <= height_;
   };
   if (!inside(a) || !inside(b)) return 0.0;  // also catches NaN
+  if (double best = below; box_search(a, b, below, best)) return best;
   // The closed cells meeting the segment, column by column (a little generous at cell
   // boundaries: an extra cell costs time, never correctness).
   constexpr double kEps = 1e-9;

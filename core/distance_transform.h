@@ -49,6 +49,7 @@ class DistanceTransform {
   };
   int index(int x, int y) const { return (y + 1) * stride_ + (x + 1); }
   double search(Point a, Point b, Candidate* cells, int count, double below) const;
+  bool box_search(Point a, Point b, double below, double& best) const;
 
   int width_ = 0;
   int height_ = 0;

@@ -130,23 +130,63 @@ double window_integral(std::span<const TurnBox> boxes, double from) {
   for (const TurnBox& b : boxes) {
     if (b.lo >= to) break;
     const double overlap = std::min(b.hi, to) - std::max(b.lo, from);
-    if (overlap > 0.0) sum += b.turn * std::min(1.0, overlap / (b.hi - b.lo));
+    if (!(overlap > 0.0)) continue;
+    // A box wholly inside the window (most of them) adds its turn: overlap == hi - lo exactly
+    // then, so the ratio below is 1.0 and the division (the loop's cost) can be skipped.
+    const double spread = b.hi - b.lo;
+    sum += overlap >= spread ? b.turn : b.turn * std::min(1.0, overlap / spread);
   }
   return sum;
 }
 
-double max_window_turn(std::span<const TurnBox> boxes) {
-  double best = 0.0;
-  std::size_t first = 0;  // the first box that ends after the window starts
-  const auto from_box = [&](double from) {
-    while (first < boxes.size() && boxes[first].hi <= from) ++first;
-    return window_integral(boxes.subspan(first), from);
+// The windows scored: one starting at each box's start, one ending at each box's end, each with
+// the range of boxes window_integral() sums (from the first that ends after the window starts to
+// the first that starts at or after its end) and the plain sum of those boxes' turns, which no
+// window's integral exceeds (each box adds at most its turn).
+struct Window {
+  double from;
+  std::size_t first, last;
+  double bound;
+};
+
+std::vector<Window> scored_windows(std::span<const TurnBox> boxes, std::span<const double> prefix) {
+  std::vector<Window> windows;
+  windows.reserve(2 * boxes.size());
+  const auto pass = [&](auto&& from_of) {
+    std::size_t first = 0;
+    std::size_t last = 0;
+    for (const TurnBox& b : boxes) {  // `from` never decreases within a pass
+      const double from = from_of(b);
+      while (first < boxes.size() && boxes[first].hi <= from) ++first;
+      last = std::max(last, first);
+      while (last < boxes.size() && boxes[last].lo < from + kSmoothnessWindow) ++last;
+      windows.push_back({from, first, last, prefix[last] - prefix[first]});
+    }
   };
-  // Windows starting at a box's start, then windows ending at a box's end (both in increasing
-  // order of their start, so `first` only moves forward within each pass).
-  for (const TurnBox& b : boxes) best = std::max(best, from_box(b.lo));
-  first = 0;
-  for (const TurnBox& b : boxes) best = std::max(best, from_box(b.hi - kSmoothnessWindow));
+  pass([](const TurnBox& b) { return b.lo; });
+  pass([](const TurnBox& b) { return b.hi - kSmoothnessWindow; });
+  return windows;
+}
+
+double max_window_turn(std::span<const TurnBox> boxes) {
+  if (boxes.empty()) return 0.0;
+  std::vector<double> prefix(boxes.size() + 1, 0.0);
+  for (std::size_t i = 0; i < boxes.size(); ++i) prefix[i + 1] = prefix[i] + boxes[i].turn;
+  const std::vector<Window> windows = scored_windows(boxes, prefix);
+  const auto integral = [&](const Window& w) {
+    return window_integral(boxes.subspan(w.first), w.from);
+  };
+  // Integrals cost a scan of their boxes each; a window whose bound stays under the best so far
+  // by more than the rounding of both sums (terms are positive, so a few ulps of the total per
+  // box) cannot be the largest, and the largest is the same double whatever order finds it.
+  const auto top =
+      std::max_element(windows.begin(), windows.end(),
+                       [](const Window& l, const Window& r) { return l.bound < r.bound; });
+  double best = integral(*top);
+  const double margin = 4.0 * static_cast<double>(boxes.size() + 1) *
+                        std::numeric_limits<double>::epsilon() * (prefix.back() + 1.0);
+  for (const Window& w : windows)
+    if (w.bound + margin >= best) best = std::max(best, integral(w));
   return best / kSmoothnessWindow;
 }
 

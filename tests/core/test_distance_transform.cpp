@@ -207,6 +207,37 @@ TEST(DistanceTransform, BoundedSegmentClearanceIsExactBelowTheBound) {
   }
 }
 
+// Short steps under a small bound (a sampled curve's segments once its least clearance is
+// tight) take the scan of the bound's box instead of the transform's candidates: the same
+// doubles as the unbounded search, down to the bit.
+TEST(DistanceTransform, ShortSegmentsUnderASmallBoundAreExact) {
+  Rng rng(5, 11);
+  for (int trial = 0; trial < 60; ++trial) {
+    const Grid g = random_grid(rng.between(2, 30), rng.between(2, 30), rng.uniform(0.0, 0.5), rng);
+    const DistanceTransform dt(g);
+    const std::vector<Cell> obs = obstacles(g);
+    Point prev = random_point(g, rng);
+    for (int k = 0; k < 200; ++k) {
+      const double step = rng.uniform(0.0, 1.5);
+      const double angle = rng.uniform(0.0, 6.283185307179586);
+      Point next{prev.x + step * std::cos(angle), prev.y + step * std::sin(angle)};
+      next.x = std::clamp(next.x, 0.0, 1.0 * g.width());
+      next.y = std::clamp(next.y, 0.0, 1.0 * g.height());
+      if (k % 7 == 0) next = Point{std::floor(next.x), next.y};  // on a cell edge
+      const double exact = dt.segment_clearance(prev, next);
+      ASSERT_NEAR(exact, brute_segment(obs, prev, next), 1e-9);
+      const double below = k % 5 == 0 ? exact : rng.uniform(0.0, 3.9);
+      const double got = dt.segment_clearance(prev, next, below);
+      if (exact < below) {
+        ASSERT_EQ(got, exact) << trial << " " << k;
+      } else {
+        ASSERT_GE(got, below) << trial << " " << k;
+      }
+      prev = next;
+    }
+  }
+}
+
 TEST(DistanceTransform, SegmentClearanceExactCases) {
   Grid g(12, 10);
   g.set_blocked(6, 2, true);  // square [6, 7] x [2, 3]

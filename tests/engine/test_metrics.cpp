@@ -1,5 +1,6 @@
-// Path metrics on hand-computed paths, the same values for a curve whatever its sampling step,
-// and the clearance metric against brute force over every obstacle cell.
+// Path metrics on hand-computed paths, smoothness_max against every window scanned, the same values
+// for a curve whatever its sampling step, and the clearance metric against brute force over every
+// obstacle cell.
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 
 #include "algos/postprocess/path_curves.h"
 #include "engine/judge/metrics.h"
+#include "engine/judge/statistics.h"
 
 namespace agv {
 namespace {
@@ -365,6 +367,78 @@ double brute_clearance(const Grid& g, const std::vector<Point>& path) {
       }
     }
   return best;
+}
+
+// docs/METRICS.md "smoothness_max" the plain way: every window starting at a turn box's start or
+// ending at its end, each summed over all boxes in order. The metric prunes windows by a bound;
+// the value must be this one to the bit.
+double every_window_smoothness(const std::vector<Point>& path) {
+  struct Box {
+    double lo, hi, turn;
+  };
+  std::vector<Box> boxes;
+  CompensatedSum length;
+  double previous_heading = 0.0;
+  double previous_length = 0.0;
+  bool have_previous = false;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const double dx = path[i].x - path[i - 1].x;
+    const double dy = path[i].y - path[i - 1].y;
+    const double l = std::hypot(dx, dy);
+    if (l == 0.0) continue;
+    const double heading = std::atan2(dy, dx);
+    if (have_previous) {
+      double turn = heading - previous_heading;
+      if (turn > kPi) turn -= 2.0 * kPi;
+      if (turn <= -kPi) turn += 2.0 * kPi;
+      const double at = length.value();
+      if (std::abs(turn) > 0.0)
+        boxes.push_back({at - std::min(kTurnSpread, previous_length / 2.0),
+                         at + std::min(kTurnSpread, l / 2.0), std::abs(turn)});
+    }
+    length.add(l);
+    have_previous = true;
+    previous_heading = heading;
+    previous_length = l;
+  }
+  const auto integral = [&](double from) {
+    const double to = from + kSmoothnessWindow;
+    double sum = 0.0;
+    for (const Box& b : boxes) {
+      if (b.hi <= from) continue;
+      if (b.lo >= to) break;
+      const double overlap = std::min(b.hi, to) - std::max(b.lo, from);
+      if (overlap > 0.0) sum += b.turn * std::min(1.0, overlap / (b.hi - b.lo));
+    }
+    return sum;
+  };
+  double best = 0.0;
+  for (const Box& b : boxes) best = std::max(best, integral(b.lo));
+  for (const Box& b : boxes) best = std::max(best, integral(b.hi - kSmoothnessWindow));
+  return best / kSmoothnessWindow;
+}
+
+TEST(Metrics, SmoothnessMaxIsTheLargestOfEveryWindow) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const Grid g(64, 64);
+  for (int trial = 0; trial < 300; ++trial) {
+    // Wiggles of random step, curvature and length, a kink now and then, some repeated points.
+    std::vector<Point> path = {{32.0, 32.0}};
+    double heading = unit(rng) * 2.0 * kPi;
+    const double step = 0.02 + unit(rng) * (trial % 3 == 0 ? 2.0 : 0.3);
+    const double curvature = (unit(rng) - 0.5) * 4.0;
+    const int points = 2 + static_cast<int>(unit(rng) * 400.0);
+    for (int i = 1; i < points; ++i) {
+      heading += step * curvature * std::sin(0.05 * i) + (unit(rng) < 0.03 ? 1.5 : 0.0);
+      const Point& p = path.back();
+      path.push_back(unit(rng) < 0.02
+                         ? p
+                         : Point{p.x + step * std::cos(heading), p.y + step * std::sin(heading)});
+    }
+    const PathMetrics m = compute_path_metrics(g, path);
+    ASSERT_EQ(m.smoothness_max, every_window_smoothness(path)) << "trial " << trial;
+  }
 }
 
 TEST(Metrics, ClearanceMatchesBruteForce) {

@@ -250,6 +250,29 @@ double distance_to_tile(HalfPoint p, int tx, int ty) {
   return std::sqrt(dx * dx + dy * dy);
 }
 
+// Largest a * out.x + b * out.y over the outs from p to tile (tx, ty)'s vertex box (doubled).
+std::int64_t max_over_tile(std::int64_t a, std::int64_t b, HalfPoint p, int tx, int ty) {
+  const int lo_x = 2 * tx * kTile - p.x;
+  const int lo_y = 2 * ty * kTile - p.y;
+  const int hi_x = lo_x + 2 * (kTile - 1);
+  const int hi_y = lo_y + 2 * (kTile - 1);
+  return a * (a > 0 ? hi_x : lo_x) + b * (b > 0 ? hi_y : lo_y);
+}
+
+// Whether some out from p into tile (tx, ty) could pass taut_around(bx, by, back, out). Its
+// sign s is fixed by the back terms, and its out conditions are linear in out (the cross product
+// strictly, the two quadrant edges not), so a tile where one of them fails at its best corner
+// holds no node the expansion would relax: skipping it changes nothing but the time.
+bool taut_cone_meets_tile(int bx, int by, HalfPoint back, HalfPoint p, int tx, int ty) {
+  const std::int64_t back_k1 = -std::int64_t{back.y} * bx;
+  const std::int64_t back_k2 = std::int64_t{back.x} * by;
+  if (back_k1 == 0 && back_k2 == 0) return false;
+  const std::int64_t s = back_k1 > 0 || back_k2 > 0 ? 1 : -1;
+  if (s * back_k1 < 0 || s * back_k2 < 0) return false;
+  return max_over_tile(-s * back.y, s * back.x, p, tx, ty) > 0 &&
+         max_over_tile(0, s * bx, p, tx, ty) >= 0 && max_over_tile(-s * by, 0, p, tx, ty) >= 0;
+}
+
 void relax(int u, int w, HalfPoint pu, double gu, const Cells& cells, bool allow,
            AnyAngleScratch& s) {
   const double ng = gu + half_distance(pu, s.node[w]);
@@ -300,6 +323,9 @@ void expand(int u, const Cells& cells, bool allow, AnyAngleScratch& s) {
       // No node of the tile can improve on the goal's cost so far.
       const double through = gu + distance_to_tile(pu, tx, ty) + distance_to_tile(goal, tx, ty);
       if (through >= s.g[kGoalNode] || through > s.upper) continue;
+      if (bend && !taut_cone_meets_tile(ubx, uby, back, pu, tx, ty) &&
+          !(upinch && taut_cone_meets_tile(-ubx, -uby, back, pu, tx, ty)))
+        continue;
       for (int w = begin; w < end; ++w) {
         if (s.closed[w]) continue;
         const HalfPoint out{s.node[w].x - pu.x, s.node[w].y - pu.y};

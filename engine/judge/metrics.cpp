@@ -40,8 +40,8 @@ struct Bend {
   int sign;
 };
 
-std::vector<Bend> bends_of(std::span<const Vertex> vertices, double length) {
-  std::vector<Bend> bends;
+void bends_of(std::span<const Vertex> vertices, double length, std::vector<Bend>& bends) {
+  bends.clear();
   for (const Vertex& v : vertices)
     if (std::abs(v.turn) > kStraightTolerance)
       bends.push_back({std::abs(v.turn), v.at, 0.0, 0.0, 0.0, v.turn > 0.0 ? 1 : -1});
@@ -54,7 +54,6 @@ std::vector<Bend> bends_of(std::span<const Vertex> vertices, double length) {
     b.hi = b.at + std::min(kTurnSpread, after);
     b.density = b.turn / std::max(b.hi - b.lo, 1e-12);
   }
-  return bends;
 }
 
 // One lobe, bends[first .. last], cut into ceil(extent / kTurnMaxExtent) pieces of equal arc.
@@ -75,9 +74,10 @@ void close_lobe(std::span<const Bend> bends, std::size_t first, std::size_t last
 
 // docs/METRICS.md "turns": runs of one sign whose spreads touch, cut at density valleys below
 // kTurnValleyRatio of the peak on either side, each lobe capped at kTurnMaxExtent of arc.
-TurnSummary merged_turns(std::span<const Vertex> vertices, double length) {
+TurnSummary merged_turns(std::span<const Vertex> vertices, double length,
+                         std::vector<Bend>& bends) {
   TurnSummary t;
-  const std::vector<Bend> bends = bends_of(vertices, length);
+  bends_of(vertices, length, bends);
   if (bends.empty()) return t;
   std::size_t first = 0;
   double peak = bends[0].density;  // the open lobe's highest density since its last valley
@@ -149,9 +149,9 @@ struct Window {
   double bound;
 };
 
-std::vector<Window> scored_windows(std::span<const TurnBox> boxes, std::span<const double> prefix) {
-  std::vector<Window> windows;
-  windows.reserve(2 * boxes.size());
+void scored_windows(std::span<const TurnBox> boxes, std::span<const double> prefix,
+                    std::vector<Window>& windows) {
+  windows.clear();
   const auto pass = [&](auto&& from_of) {
     std::size_t first = 0;
     std::size_t last = 0;
@@ -165,14 +165,14 @@ std::vector<Window> scored_windows(std::span<const TurnBox> boxes, std::span<con
   };
   pass([](const TurnBox& b) { return b.lo; });
   pass([](const TurnBox& b) { return b.hi - kSmoothnessWindow; });
-  return windows;
 }
 
-double max_window_turn(std::span<const TurnBox> boxes) {
+double max_window_turn(std::span<const TurnBox> boxes, std::vector<double>& prefix,
+                       std::vector<Window>& windows) {
   if (boxes.empty()) return 0.0;
-  std::vector<double> prefix(boxes.size() + 1, 0.0);
+  prefix.assign(boxes.size() + 1, 0.0);
   for (std::size_t i = 0; i < boxes.size(); ++i) prefix[i + 1] = prefix[i] + boxes[i].turn;
-  const std::vector<Window> windows = scored_windows(boxes, prefix);
+  scored_windows(boxes, prefix, windows);
   const auto integral = [&](const Window& w) {
     return window_integral(boxes.subspan(w.first), w.from);
   };
@@ -190,6 +190,22 @@ double max_window_turn(std::span<const TurnBox> boxes) {
   return best / kSmoothnessWindow;
 }
 
+// A path's working arrays, kept per thread from run to run: sampled curves have thousands of
+// points, and fresh arrays for each run cost their growth copies and, once the allocator has
+// given the pages back, a page fault per page (perf showed both above the metrics' own work).
+struct MetricBuffers {
+  std::vector<Vertex> vertices;
+  std::vector<TurnBox> boxes;
+  std::vector<Bend> bends;
+  std::vector<double> prefix;
+  std::vector<Window> windows;
+};
+
+MetricBuffers& thread_buffers() {
+  thread_local MetricBuffers buffers;
+  return buffers;
+}
+
 }  // namespace
 
 PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
@@ -200,8 +216,11 @@ PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
 
   CompensatedSum length;
   CompensatedSum turn_sum;
-  std::vector<Vertex> vertices;
-  std::vector<TurnBox> boxes;
+  MetricBuffers& buffers = thread_buffers();
+  std::vector<Vertex>& vertices = buffers.vertices;
+  std::vector<TurnBox>& boxes = buffers.boxes;
+  vertices.clear();
+  boxes.clear();
   bool have_previous = false;
   double previous_heading = 0.0;
   double previous_length = 0.0;
@@ -228,11 +247,11 @@ PathMetrics compute_path_metrics(const Grid& grid, std::span<const Point> path,
   m.path_length = length.value();
   m.path_length_m = m.path_length * grid.cell_edge();
   m.turn_angle_rad = turn_sum.value();
-  const TurnSummary turns = merged_turns(vertices, m.path_length);
+  const TurnSummary turns = merged_turns(vertices, m.path_length, buffers.bends);
   m.turns = turns.count;
   m.max_turn_rad = turns.max;
   if (m.path_length > 0.0) m.smoothness_mean = m.turn_angle_rad / m.path_length;
-  m.smoothness_max = max_window_turn(boxes);
+  m.smoothness_max = max_window_turn(boxes, buffers.prefix, buffers.windows);
 
   const DistanceTransform& dt = grid.distance_transform();
   double clearance =

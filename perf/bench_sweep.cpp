@@ -2,10 +2,13 @@
 // machine has them), the figure a user planning a long sweep needs; and where a sweep's CPU goes
 // (`sweep/phases`): per run, the microseconds of the engine's phases (engine/system/phase_clock.h)
 // beside the planners', of the config given with --config (default configs/quick.json;
-// perf/README.md "Planner throughput" runs it on configs/default.json).
+// perf/README.md "Planner throughput" runs it on configs/default.json). With --journal PATH the
+// phases run as `agvbench run --runs-out PATH` does: the journal written (PATH replaced) and each
+// finished cell released, so `record_us` is what a run costs under the sinks' lock.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -21,6 +24,7 @@
 namespace {
 
 std::string g_config = std::string(AGV_SOURCE_DIR) + "/configs/quick.json";
+std::string g_journal;  // --journal: "" = none
 
 agv::SweepConfig bench_config() { return agv::load_config(g_config); }
 
@@ -59,7 +63,10 @@ void bm_phases(benchmark::State& state) {
   const agv::SweepConfig config = bench_config();
   agv::SweepOptions options;
   options.threads = static_cast<int>(state.range(0));
+  options.runs_path = g_journal;
+  options.release_cells = !g_journal.empty();
   for (auto _ : state) {
+    if (!g_journal.empty()) std::remove(g_journal.c_str());
     agv::reset_phase_clock();
     agv::enable_phase_clock(true);
     const std::int64_t cpu0 = process_cpu_ns();
@@ -77,7 +84,8 @@ void bm_phases(benchmark::State& state) {
     const std::int64_t judge = phase(agv::EnginePhase::judge) - reference;  // reference nested
     const std::int64_t planner = phase(agv::EnginePhase::planner);
     const std::int64_t accounted = phase(agv::EnginePhase::map) + reference + planner + judge +
-                                   phase(agv::EnginePhase::record) + report_ns;
+                                   phase(agv::EnginePhase::record) +
+                                   phase(agv::EnginePhase::sinks) + report_ns;
     const auto us = [runs](std::int64_t ns) { return static_cast<double>(ns) / 1e3 / runs; };
     state.counters["runs"] = runs;
     state.counters["cpu_us_per_run"] = us(cpu);
@@ -86,6 +94,7 @@ void bm_phases(benchmark::State& state) {
     state.counters["reference_us"] = us(reference);
     state.counters["judge_us"] = us(judge);
     state.counters["record_us"] = us(phase(agv::EnginePhase::record));
+    state.counters["sinks_us"] = us(phase(agv::EnginePhase::sinks));
     state.counters["report_us"] = us(report_ns);
     state.counters["other_us"] = us(cpu - accounted);
     state.counters["engine_pct"] =
@@ -96,11 +105,13 @@ void bm_phases(benchmark::State& state) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // --config PATH (ours), the rest for Google Benchmark.
+  // --config PATH and --journal PATH (ours), the rest for Google Benchmark.
   int kept = 1;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--config") == 0 && i + 1 < argc) {
       g_config = argv[++i];
+    } else if (std::strcmp(argv[i], "--journal") == 0 && i + 1 < argc) {
+      g_journal = argv[++i];
     } else {
       argv[kept++] = argv[i];
     }

@@ -22,6 +22,7 @@
 #include "engine/outputs/report.h"
 #include "engine/outputs/sweep_identity.h"
 #include "engine/sweep/map_task.h"
+#include "engine/system/phase_clock.h"
 
 namespace agv {
 
@@ -263,6 +264,7 @@ class SinkCalls {
   // Throws SinkError.
   void task_done(std::int64_t task, const TaskDone& done, bool whole) {
     std::lock_guard lock(mutex_);
+    const PhaseScope timed(EnginePhase::sinks);  // after the lock: its wait is no CPU of ours
     const TaskRuns runs{task, done.facts, done.runs};
     for (SweepSink* sink : sinks_) sink->task_done(runs);
     if (!whole || --tasks_left_[cell_index(task)] > 0) return;

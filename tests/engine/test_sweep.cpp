@@ -56,7 +56,8 @@ std::string deterministic_text(const SweepConfig& config, int threads, const std
 }
 
 // perf/bench_sweep's breakdown (engine/system/phase_clock.h): off, it counts nothing; on, its
-// planner phase is exactly the runs' own planning times, and every engine phase has run.
+// planner phase is exactly the runs' own planning times, and every engine phase has run (the
+// sinks' with a journal to write, as `run --runs-out` has).
 TEST(PhaseClock, CountsThePlannersTimesExactlyAndNothingWhenOff) {
   const SweepConfig config = reduced_default(3, false);
   SweepOptions options;
@@ -64,9 +65,13 @@ TEST(PhaseClock, CountsThePlannersTimesExactlyAndNothingWhenOff) {
   reset_phase_clock();
   run_sweep(config, options);
   for (const std::int64_t ns : phase_clock_totals()) EXPECT_EQ(ns, 0);
+  const fs::path runs =
+      fs::temp_directory_path() / ("agv_test_phases_" + std::to_string(::getpid()) + ".jsonl");
+  options.runs_path = runs.string();
   enable_phase_clock(true);
   const SweepResults r = run_sweep(config, options);
   enable_phase_clock(false);
+  fs::remove(runs);
   const PhaseTotals t = phase_clock_totals();
   std::int64_t plan_ns = 0;
   for (const CellResults& cell : r.cells)
@@ -77,6 +82,7 @@ TEST(PhaseClock, CountsThePlannersTimesExactlyAndNothingWhenOff) {
   EXPECT_GT(at(EnginePhase::map), 0);
   EXPECT_GT(at(EnginePhase::reference), 0);
   EXPECT_GT(at(EnginePhase::record), 0);
+  EXPECT_GT(at(EnginePhase::sinks), 0);
   // The references are computed while a run is judged: inside the judge phase.
   EXPECT_GE(at(EnginePhase::judge), at(EnginePhase::reference));
   reset_phase_clock();

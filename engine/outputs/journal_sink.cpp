@@ -26,7 +26,11 @@ void JournalSink::start(const SweepStart& start) {
 void JournalSink::task_done(const TaskRuns& runs) {
   // A task an interruption cut before its first run left nothing to record.
   if (runs.runs.empty()) return;
-  writer_.write(journal_lines(*plan_, runs.task, runs.facts, runs.runs));
+  if (runs.journal_lines != nullptr) {
+    writer_.write(*runs.journal_lines);
+  } else {
+    writer_.write(journal_lines(*plan_, runs.task, runs.facts, runs.runs));
+  }
 }
 
 }  // namespace agv

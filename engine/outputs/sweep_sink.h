@@ -45,6 +45,9 @@ struct TaskRuns {
   std::int64_t task = 0;
   const MapFacts& facts;                 // the map and the references its runs computed
   const std::vector<RecordedRun>& runs;  // in the order they ran
+  // The task's journal lines (engine/outputs/journal_sink.h journal_lines), when the runner made
+  // them before taking the sinks' lock; null otherwise.
+  const std::string* journal_lines = nullptr;
 };
 
 class SweepSink {

@@ -247,13 +247,15 @@ class FirstFailure {
 class SinkCalls {
  public:
   // release: a finished cell's run slots are freed once the sinks had it, its digest kept.
+  // journal: the sweep has a journal sink, whose lines are then made before the lock.
   SinkCalls(std::vector<SweepSink*> sinks, const SweepConfig& config, SweepResults& results,
-            const Todo& todo, bool release)
+            const Todo& todo, bool release, bool journal)
       : sinks_(std::move(sinks)),
         config_(config),
         results_(results),
         tasks_left_(results.plan.cells.size(), 0),
-        release_(release) {
+        release_(release),
+        journal_(journal) {
     for (const std::int64_t t : todo.tasks) ++tasks_left_[cell_index(t)];
   }
 
@@ -263,9 +265,16 @@ class SinkCalls {
   // The task's runs to every sink, then its cell when `whole` made it the cell's last task.
   // Throws SinkError.
   void task_done(std::int64_t task, const TaskDone& done, bool whole) {
+    // The journal's lines need nothing the lock guards: made by this thread, only their write
+    // waits for the others (perf/README.md "Thread scaling beyond two cores").
+    std::string lines;
+    if (journal_ && !done.runs.empty()) {
+      const PhaseScope timed(EnginePhase::record);
+      lines = journal_lines(results_.plan, task, done.facts, done.runs);
+    }
     std::lock_guard lock(mutex_);
     const PhaseScope timed(EnginePhase::sinks);  // after the lock: its wait is no CPU of ours
-    const TaskRuns runs{task, done.facts, done.runs};
+    const TaskRuns runs{task, done.facts, done.runs, journal_ ? &lines : nullptr};
     for (SweepSink* sink : sinks_) sink->task_done(runs);
     if (!whole || --tasks_left_[cell_index(task)] > 0) return;
     const SweepCell& cell = results_.plan.cell_of(task);
@@ -298,6 +307,7 @@ class SinkCalls {
   SweepResults& results_;
   std::vector<std::int64_t> tasks_left_;  // by cell index
   bool release_;
+  bool journal_;
   std::mutex mutex_;
 };
 
@@ -408,7 +418,7 @@ void run_sweep(const SweepConfig& config, SweepResults& res, const SweepOptions&
                             static_cast<std::size_t>(res.threads));
 
   const Todo todo = pending_tasks(res, options);
-  SinkCalls calls(std::move(sinks), config, res, todo, options.release_cells);
+  SinkCalls calls(std::move(sinks), config, res, todo, options.release_cells, journal.has_value());
   calls.start({config, res, todo.runs, restored, restored_messages});
   SweepState state(context, res);
   FirstFailure failure;

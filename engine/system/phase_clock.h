@@ -14,9 +14,9 @@ enum class EnginePhase : int {
   reference,  // the per-map references: optimal lengths (Dijkstra), the any-angle bound
   planner,    // the planners' calls (the plan_time_ns of every run)
   judge,      // after a planner returned: contract checks, validation, metrics (reference included)
-  record,     // storing a finished run in its slot
-  sinks,      // a finished map task to the sinks, under their lock: journal lines, the cell's
-              // statistics when it completes the cell (released cells), the report's, progress
+  record,     // storing a finished run in its slot; a finished task's journal lines
+  sinks,      // a finished map task to the sinks, under their lock: the journal's write, the
+              // cell's statistics when it completes the cell (released cells), progress
   count
 };
 

@@ -2,9 +2,10 @@
 // machine has them), the figure a user planning a long sweep needs; and where a sweep's CPU goes
 // (`sweep/phases`): per run, the microseconds of the engine's phases (engine/system/phase_clock.h)
 // beside the planners', of the config given with --config (default configs/quick.json;
-// perf/README.md "Planner throughput" runs it on configs/default.json). With --journal PATH the
-// phases run as `agvbench run --runs-out PATH` does: the journal written (PATH replaced) and each
-// finished cell released, so `record_us` is what a run costs under the sinks' lock.
+// perf/README.md "Planner throughput" runs it on configs/default.json). With --journal PATH (a
+// file that must not exist yet) the phases run as `agvbench run --runs-out PATH` does: the
+// journal written and each finished cell released, so `sinks_us` is what a run costs under the
+// sinks' lock.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
@@ -117,6 +118,12 @@ int main(int argc, char** argv) {
     }
   }
   argc = kept;
+  // Each iteration starts its journal anew: never over a file the user had.
+  if (!g_journal.empty() && std::ifstream(g_journal).good()) {
+    std::fprintf(stderr, "bench_sweep: --journal %s: the file exists; give a new path\n",
+                 g_journal.c_str());
+    return 2;
+  }
   const int hw = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
   auto* b = benchmark::RegisterBenchmark("sweep/run", bm_sweep);
   for (int t = 1; t <= hw; t *= 2) b->Arg(t);
